@@ -1,0 +1,18 @@
+#pragma once
+/// The `ballistic` flight model: free flight under uniform gravity between events.
+#include "vec3.hpp"
+
+namespace carom {
+
+/// r(s) = r0 + v0 s + g s^2 / 2,  v(s) = v0 + g s. Spin is constant in flight.
+struct BallisticFlight {
+  Vec3 gravity = Vec3::Zero();  ///< g, m/s^2.
+
+  Vec3 position(const Vec3& r0, const Vec3& v0, double s) const {
+    return r0 + s * v0 + (0.5 * s * s) * gravity;
+  }
+  Vec3 velocity(const Vec3& v0, double s) const { return v0 + s * gravity; }
+  bool has_gravity() const { return gravity.x() != 0.0 || gravity.y() != 0.0 || gravity.z() != 0.0; }
+};
+
+}  // namespace carom

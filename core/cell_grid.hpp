@@ -1,0 +1,126 @@
+#pragma once
+/// A hierarchical cell grid: the neighbour structure that stays fast for polydisperse systems.
+///
+/// Particles are sorted by size into levels; each level is a uniform grid whose cells are at least
+/// as wide as the largest diameter in the level. A particle lives in one cell of its own level and
+/// its predictions are valid until it leaves that cell (a cell-crossing event). To find every
+/// partner it could touch before then, it visits, on each level, the cells that overlap its own
+/// cell grown by (its radius + the largest radius of that level). On its own level that is the
+/// 3x3x3 block around it; fines looking up at large particles visit a handful of coarse cells;
+/// large particles looking down visit the fine cells around them. With one grid sized by the
+/// largest particle, fines 10x smaller would put ~1000 of them in every cell.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "domain.hpp"
+#include "vec3.hpp"
+
+namespace carom {
+
+class HierarchicalGrid {
+ public:
+  /// One uniform grid.
+  struct Level {
+    std::array<int, 3> cells{1, 1, 1};  ///< Number of cells per axis.
+    Vec3 cell_size = Vec3::Ones();      ///< Cell edge per axis, m (>= the largest diameter).
+    double max_radius = 0;              ///< Largest particle radius in this level, m.
+    std::vector<std::int32_t> head;     ///< First particle of each cell's list, or -1.
+  };
+
+  HierarchicalGrid() = default;
+  /// Builds the levels for particles of the given radii. A smaller size starts a new level when
+  /// its diameter is below `level_ratio` times the current level's; level_ratio = 0 puts every
+  /// particle in one grid (for comparison). Throws std::invalid_argument when a periodic axis is
+  /// shorter than three cells.
+  HierarchicalGrid(const Domain& domain, const std::vector<double>& radius, double level_ratio = 0.5);
+
+  /// Places particle i (centre r) in its cell, on its level.
+  void insert(std::int32_t i, const Vec3& r);
+  /// Takes particle i out of the grid (it can be inserted again).
+  void remove(std::int32_t i) { unlink(i); }
+  /// Moves particle i to the neighbouring cell across face (axis, +1 or -1), wrapping periodic axes.
+  /// Returns the shift to add to the particle's stored position (non-zero after a periodic wrap).
+  Vec3 cross(std::int32_t i, int axis, int direction);
+
+  /// Level of particle i.
+  int level_of(std::int32_t i) const { return level_[i]; }
+  /// Cell coordinates of particle i on its level.
+  const std::array<int, 3>& cell_of(std::int32_t i) const { return coords_[i]; }
+  /// Lower corner of particle i's cell, m.
+  Vec3 cell_lower(std::int32_t i) const;
+  /// Upper corner of particle i's cell, m.
+  Vec3 cell_upper(std::int32_t i) const;
+  /// True when the face (axis, direction) of particle i's cell is on the boundary of a walled
+  /// (non-periodic) axis, so that no crossing through it is ever expected.
+  bool is_outer_face(std::int32_t i, int axis, int direction) const;
+
+  const std::vector<Level>& levels() const { return levels_; }
+  const Domain& domain() const { return domain_; }
+
+  /// Calls visit(j) for every particle j != i that could touch i while i stays in its cell.
+  template <class Visit>
+  void for_each_candidate(std::int32_t i, double radius_i, Visit&& visit) const;
+
+  /// Cell coordinates on `level` of a point (clamped into the grid).
+  std::array<int, 3> cell_coordinates(int level, const Vec3& r) const;
+
+ private:
+  std::int32_t flat_index(int level, const std::array<int, 3>& c) const {
+    const auto& n = levels_[level].cells;
+    return c[0] + n[0] * (c[1] + n[1] * c[2]);
+  }
+  void link(std::int32_t i);
+  void unlink(std::int32_t i);
+  /// A run of consecutive cell indices along one axis, wrapped on periodic axes.
+  struct AxisRange {
+    int first = 0;   ///< First index (may be negative or past the end before wrapping).
+    int count = 0;   ///< Number of cells.
+    int cells = 1;   ///< Cells on this axis.
+    bool wrap = false;
+    int at(int m) const {
+      const int idx = first + m;
+      return wrap ? (idx < 0 ? idx + cells : (idx >= cells ? idx - cells : idx)) : idx;
+    }
+  };
+  /// Cells [first, last] on `level`, axis k: clamped on walled axes, at most one lap on periodic.
+  AxisRange clip(int level, int k, int first, int last) const;
+  /// The cells on `level`, axis k, that overlap the interval [lo, hi] (m).
+  AxisRange covering(int level, int k, double lo, double hi) const;
+
+  Domain domain_;
+  std::vector<Level> levels_;
+  std::vector<double> level_diameter_;  ///< Nominal (largest) diameter of each level, m.
+  std::vector<std::int32_t> next_, prev_;
+  std::vector<std::uint8_t> level_;
+  std::vector<std::array<int, 3>> coords_;
+};
+
+template <class Visit>
+void HierarchicalGrid::for_each_candidate(std::int32_t i, double radius_i, Visit&& visit) const {
+  const int own = level_[i];
+  const Vec3 lower = cell_lower(i), upper = cell_upper(i);
+  for (int level = 0; level < static_cast<int>(levels_.size()); ++level) {
+    const Level& grid = levels_[level];
+    AxisRange range[3];
+    if (level == own) {
+      // The 3x3x3 block: the cell is wider than any contact distance within the level.
+      for (int k = 0; k < 3; ++k) range[k] = clip(level, k, coords_[i][k] - 1, coords_[i][k] + 1);
+    } else {
+      const double reach = radius_i + grid.max_radius;
+      for (int k = 0; k < 3; ++k) range[k] = covering(level, k, lower[k] - reach, upper[k] + reach);
+    }
+    for (int a = 0; a < range[2].count; ++a) {
+      const int z = range[2].at(a);
+      for (int b = 0; b < range[1].count; ++b) {
+        const int row = grid.cells[0] * (range[1].at(b) + grid.cells[1] * z);
+        for (int d = 0; d < range[0].count; ++d) {
+          for (std::int32_t j = grid.head[range[0].at(d) + row]; j >= 0; j = next_[j])
+            if (j != i) visit(j);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace carom

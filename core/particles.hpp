@@ -1,0 +1,75 @@
+#pragma once
+/// The particle store: structure-of-arrays, hot dynamic state apart from cold bookkeeping.
+#include <cstdint>
+#include <vector>
+
+#include "vec3.hpp"
+
+namespace carom {
+
+/// Every particle's state. Positions and velocities are stored as of the particle's own
+/// clock ("delayed states"): a particle is advanced only when it takes part in an event.
+struct ParticleStore {
+  // Hot: read at every prediction.
+  std::vector<Vec3> position;   ///< Centre r_i at time clock[i], m.
+  std::vector<Vec3> velocity;   ///< Velocity v_i at time clock[i], m/s.
+  std::vector<double> clock;    ///< t_i: the time the stored state refers to, s.
+  std::vector<double> radius;   ///< a_i, m.
+  std::vector<std::uint32_t> event_counter;  ///< Bumped whenever the trajectory changes.
+
+  // Warm: read at collisions.
+  std::vector<Vec3> spin;       ///< Angular velocity w_i, rad/s (constant in free flight).
+  std::vector<double> mass;     ///< m_i, kg.
+  std::vector<double> inertia;  ///< I_i = (2/5) m_i a_i^2, kg m^2.
+  std::vector<double> last_collision;  ///< Time of the particle's last collision, s (TC model).
+
+  // Cold.
+  std::vector<std::uint32_t> species;  ///< Index into the species list.
+  std::vector<std::uint64_t> id;       ///< Stable user-visible identifier.
+
+  std::size_t size() const { return position.size(); }
+
+  /// Appends one particle at rest in time at `time`.
+  void add(const Vec3& r, const Vec3& v, const Vec3& w, double a, double m, double inertia_value,
+           std::uint32_t species_index, std::uint64_t particle_id, double time = 0.0) {
+    position.push_back(r);
+    velocity.push_back(v);
+    clock.push_back(time);
+    radius.push_back(a);
+    event_counter.push_back(0);
+    spin.push_back(w);
+    mass.push_back(m);
+    inertia.push_back(inertia_value);
+    last_collision.push_back(-kNever);
+    species.push_back(species_index);
+    id.push_back(particle_id);
+  }
+
+  /// Removes the last particle.
+  void pop_back() {
+    position.pop_back(); velocity.pop_back(); clock.pop_back(); radius.pop_back();
+    event_counter.pop_back(); spin.pop_back(); mass.pop_back(); inertia.pop_back();
+    last_collision.pop_back(); species.pop_back(); id.pop_back();
+  }
+
+  /// Reorders every array so that new particle k is old particle order[k].
+  void permute(const std::vector<std::size_t>& order) {
+    auto apply = [&](auto& column) {
+      auto old = column;
+      for (std::size_t k = 0; k < order.size(); ++k) column[k] = old[order[k]];
+    };
+    apply(position);
+    apply(velocity);
+    apply(clock);
+    apply(radius);
+    apply(event_counter);
+    apply(spin);
+    apply(mass);
+    apply(inertia);
+    apply(last_collision);
+    apply(species);
+    apply(id);
+  }
+};
+
+}  // namespace carom

@@ -1,0 +1,37 @@
+#pragma once
+/// Everything that defines a granular system before it runs: box, walls, species, laws, particles.
+#include <string>
+#include <vector>
+
+#include "ballistic_flight.hpp"
+#include "domain.hpp"
+#include "materials.hpp"
+#include "particles.hpp"
+#include "species.hpp"
+#include "wall.hpp"
+
+namespace carom {
+
+struct System {
+  Domain domain;                 ///< The box and its periodic axes.
+  std::vector<Species> species;  ///< Particle kinds; particles refer to them by index.
+  std::vector<Wall> walls;       ///< Fixed boundaries (box walls, inclined planes, a cylinder).
+  MaterialTable materials;       ///< Contact laws per species pair and species-wall pair.
+  BallisticFlight flight;        ///< Gravity and the trajectory between events.
+  ParticleStore particles;       ///< The particles.
+
+  /// Adds one particle of species s with velocity v and spin w at position r (time 0).
+  void add_particle(std::uint32_t s, const Vec3& r, const Vec3& v, const Vec3& w = Vec3::Zero()) {
+    const Species& kind = species.at(s);
+    particles.add(r, v, w, kind.radius(), kind.mass(), kind.inertia(), s, particles.size());
+  }
+};
+
+/// The six planes of the box on every non-periodic axis, named x_low, x_high, y_low, ...
+std::vector<Wall> box_walls(const Domain& domain);
+
+/// Throws std::invalid_argument (naming the particles) when two particles overlap, a particle
+/// pokes through a wall or lies outside the box, or any state is not finite. O(N) with a grid.
+void validate_initial_state(const System& system);
+
+}  // namespace carom

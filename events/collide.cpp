@@ -1,0 +1,135 @@
+// Processing of particle events: pair and wall collisions, cell crossings, the stall detector.
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "simulator.hpp"
+#include "walton.hpp"
+
+namespace carom {
+
+ContactLaw Simulator::effective_law(const ContactLaw& law, double normal_speed, double t,
+                                    std::int32_t i, std::int32_t j) const {
+  const CollapseOptions& collapse = options_.collapse;
+  const auto& last = system_.particles.last_collision;
+  if (collapse.contact_time > 0.0 &&
+      (t - last[i] < collapse.contact_time || (j >= 0 && t - last[j] < collapse.contact_time))) {
+    ContactLaw elastic_smooth;  // e = 1, mu = 0: no energy lost, no tangential impulse
+    return elastic_smooth;
+  }
+  if (std::abs(normal_speed) < collapse.elastic_below_speed) {
+    ContactLaw elastic = law;
+    elastic.restitution = 1.0;
+    return elastic;
+  }
+  return law;
+}
+
+void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
+  last_particle_event_ = time_ = t;
+  ParticleStore& p = system_.particles;
+  advance(i, t);
+  advance(j, t);
+  Vec3 dr = p.position[i] - p.position[j];
+  system_.domain.minimum_image(dr);
+  const double distance = dr.norm();
+  const Vec3 n = dr / distance;
+  const Vec3 momentum_before = p.mass[i] * p.velocity[i] + p.mass[j] * p.velocity[j];
+  const std::uint32_t si = p.species[i], sj = p.species[j];
+  const ContactLaw law = effective_law(system_.materials.pair(si, sj),
+                                       (p.velocity[i] - p.velocity[j]).dot(n), t, i, j);
+  const CollisionOutcome outcome =
+      collide(law, n, ContactBody{p.velocity[i], p.spin[i], 1.0 / p.mass[i], p.radius[i], 1.0 / p.inertia[i]},
+              ContactBody{p.velocity[j], p.spin[j], 1.0 / p.mass[j], p.radius[j], 1.0 / p.inertia[j]});
+  if (options_.check_invariants) check_pair_invariants(i, j, momentum_before);
+
+  const std::size_t species = statistics_.species_count;
+  ++statistics_.pair_collisions[si * species + sj];
+  if (si != sj) ++statistics_.pair_collisions[sj * species + si];
+  ++statistics_.pair_events;
+  statistics_.virial += dr * outcome.impulse.transpose();
+  statistics_.dissipated_energy += outcome.dissipated;
+  ++p.event_counter[i];
+  ++p.event_counter[j];
+  predict(i);
+  predict(j);
+  book_collision(i, t, "particle " + std::to_string(p.id[j]));
+  book_collision(j, t, "particle " + std::to_string(p.id[i]));
+  p.last_collision[i] = p.last_collision[j] = t;
+}
+
+void Simulator::collide_wall(std::int32_t i, std::int32_t w, double t) {
+  last_particle_event_ = time_ = t;
+  ParticleStore& p = system_.particles;
+  advance(i, t);
+  const Wall& wall = system_.walls[w];
+  const Vec3 n = wall.contact_normal(p.position[i]);
+  if (options_.check_invariants && wall.gap(p.position[i], p.radius[i]) < -1e-10 * p.radius[i]) {
+    std::ostringstream out;
+    out << "invariant broken: particle " << p.id[i] << " overlaps wall '" << wall.name << "' by "
+        << -wall.gap(p.position[i], p.radius[i]) << " m at t = " << t << " s";
+    throw std::logic_error(out.str());
+  }
+  const std::uint32_t si = p.species[i];
+  const ContactLaw law = effective_law(system_.materials.wall(si, w), p.velocity[i].dot(n), t, i, -1);
+  Vec3 wall_velocity = Vec3::Zero(), wall_spin = Vec3::Zero();
+  const CollisionOutcome outcome =
+      collide(law, n, ContactBody{p.velocity[i], p.spin[i], 1.0 / p.mass[i], p.radius[i], 1.0 / p.inertia[i]},
+              ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
+  ++statistics_.wall_collisions[si * statistics_.wall_count + w];
+  ++statistics_.wall_events;
+  statistics_.wall_impulse[w] -= outcome.impulse;
+  statistics_.dissipated_energy += outcome.dissipated;
+  ++p.event_counter[i];
+  predict(i);
+  book_collision(i, t, "wall '" + wall.name + "'");
+  p.last_collision[i] = t;
+}
+
+void Simulator::cross_cell(std::int32_t i, int face) {
+  const Vec3 shift = grid_.cross(i, face / 2, (face % 2) ? +1 : -1);
+  system_.particles.position[i] += shift;  // a periodic wrap moves the stored state by one box
+  ++statistics_.cell_crossings;
+  predict(i);  // same trajectory: partners' predictions with i stay valid (no counter bump)
+}
+
+void Simulator::book_collision(std::int32_t i, double t, const std::string& partner) {
+  if (t - stall_window_start_[i] > stall_window_) {
+    stall_window_start_[i] = t;
+    stall_count_[i] = 1;
+    return;
+  }
+  if (++stall_count_[i] <= options_.collapse.stall_collisions) return;
+  const ParticleStore& p = system_.particles;
+  std::ostringstream out;
+  out << "inelastic collapse at t = " << t << " s: particle " << p.id[i] << " (species "
+      << system_.species[p.species[i]].name << ", at " << position(i).transpose() << " m) took part in "
+      << stall_count_[i] << " collisions within " << (t - stall_window_start_[i])
+      << " s, the last with " << partner
+      << ". Hard spheres cannot rest in lasting contact, so the event rate diverges. Remedy: turn on "
+         "the TC model (collapse contact_time, e.g. 1e-5 s: collisions within t_c of the previous "
+         "one are elastic), or make slow impacts elastic (collapse elastic_below_speed), or raise "
+         "the restitution coefficient.";
+  std::vector<std::uint64_t> ids{p.id[i]};
+  throw InelasticCollapse(out.str(), ids);
+}
+
+void Simulator::check_pair_invariants(std::int32_t i, std::int32_t j, const Vec3& momentum_before) const {
+  const ParticleStore& p = system_.particles;
+  Vec3 dr = p.position[i] - p.position[j];
+  system_.domain.minimum_image(dr);
+  const double contact = p.radius[i] + p.radius[j];
+  const Vec3 momentum_after = p.mass[i] * p.velocity[i] + p.mass[j] * p.velocity[j];
+  const double scale = p.mass[i] * p.velocity[i].norm() + p.mass[j] * p.velocity[j].norm() +
+                       momentum_before.norm();
+  std::ostringstream out;
+  if (dr.norm() < contact * (1.0 - 1e-10))
+    out << "particles " << p.id[i] << " and " << p.id[j] << " overlap by " << contact - dr.norm() << " m";
+  else if ((momentum_after - momentum_before).norm() > 1e-13 * scale)
+    out << "momentum not conserved in collision of " << p.id[i] << " and " << p.id[j];
+  else
+    return;
+  throw std::logic_error("invariant broken at t = " + std::to_string(time_) + " s: " + out.str());
+}
+
+}  // namespace carom

@@ -1,0 +1,172 @@
+#include "simulator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace carom {
+
+namespace {
+/// Orders particles by their coarse cell so that neighbours sit close in memory.
+std::vector<std::size_t> spatial_order(const System& system) {
+  const ParticleStore& p = system.particles;
+  HierarchicalGrid coarse(system.domain, {*std::max_element(p.radius.begin(), p.radius.end())});
+  std::vector<std::int64_t> key(p.size());
+  const auto& level = coarse.levels()[0];
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto c = coarse.cell_coordinates(0, p.position[i]);
+    key[i] = c[0] + std::int64_t(level.cells[0]) * (c[1] + std::int64_t(level.cells[1]) * c[2]);
+  }
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return key[a] < key[b]; });
+  return order;
+}
+
+void validate_system(const System& system) {
+  const std::size_t species = system.species.size();
+  if (system.materials.species_count() != species || system.materials.wall_count() != system.walls.size())
+    throw std::invalid_argument("the material table does not match the species and walls");
+  for (std::size_t s = 0; s < species; ++s) {
+    for (std::size_t t = s; t < species; ++t)
+      system.materials.pair(s, t).validate("contact law " + system.species[s].name + "-" +
+                                           system.species[t].name);
+    for (std::size_t w = 0; w < system.walls.size(); ++w)
+      system.materials.wall(s, w).validate("contact law " + system.species[s].name + "-wall " +
+                                           system.walls[w].name);
+  }
+  for (std::uint32_t s : system.particles.species)
+    if (s >= species) throw std::invalid_argument("a particle refers to a species that does not exist");
+  const Vec3& g = system.flight.gravity;
+  for (const Wall& wall : system.walls)
+    if (wall.shape == Wall::Shape::Cylinder && (g.x() != 0.0 || g.y() != 0.0))
+      throw std::invalid_argument("wall '" + wall.name +
+                                  "': a cylinder's axis is along z, so gravity must be along z too");
+  validate_initial_state(system);
+}
+}  // namespace
+
+Simulator::Simulator(System system, SimulatorOptions options)
+    : system_(std::move(system)), options_(options) {
+  validate_system(system_);
+  ParticleStore& p = system_.particles;
+  const std::size_t n = p.size();
+  if (n > 0) p.permute(spatial_order(system_));
+  grid_ = HierarchicalGrid(system_.domain, p.radius, options_.grid_level_ratio);
+  for (std::size_t i = 0; i < n; ++i) grid_.insert(static_cast<std::int32_t>(i), p.position[i]);
+  statistics_.resize(system_.species.size(), system_.walls.size());
+  has_gravity_ = system_.flight.has_gravity();
+  events_.assign(n, Event{});
+  end_slot_ = n;
+  calendar_.resize(n + 1);
+  stall_window_start_.assign(n, -kNever);
+  stall_count_.assign(n, 0);
+
+  stall_window_ = options_.collapse.stall_window;
+  if (stall_window_ <= 0.0 && n > 0) {
+    const double d_min = 2.0 * *std::min_element(p.radius.begin(), p.radius.end());
+    double mean_square = 0.0;
+    for (const Vec3& v : p.velocity) mean_square += v.squaredNorm();
+    const double speed = std::max(std::sqrt(mean_square / n),
+                                  std::sqrt(system_.flight.gravity.norm() * d_min));
+    stall_window_ = speed > 0.0 ? 1e-9 * d_min / speed : 0.0;
+  }
+  time_ = last_particle_event_ = n > 0 ? *std::max_element(p.clock.begin(), p.clock.end()) : 0.0;
+  for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
+}
+
+void Simulator::add_periodic_action(std::string name, double first_time, double interval,
+                                    std::function<void()> action) {
+  if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
+  actions_.push_back(PeriodicAction{std::move(name), first_time, interval, std::move(action)});
+  calendar_.resize(end_slot_ + 1 + actions_.size());
+  calendar_.set(end_slot_ + actions_.size(), first_time);
+}
+
+void Simulator::run_until(double t_end) {
+  if (!(t_end >= time_))
+    throw std::invalid_argument("run_until: the end time " + std::to_string(t_end) +
+                                " s is before the current time " + std::to_string(time_) + " s");
+  calendar_.set(end_slot_, t_end);
+  for (;;) {
+    const std::size_t slot = calendar_.top_slot();
+    if (slot < end_slot_) {
+      process_particle_event(static_cast<std::int32_t>(slot));
+    } else if (slot == end_slot_) {
+      calendar_.set(end_slot_, kNever);
+      time_ = t_end;
+      return;
+    } else {
+      PeriodicAction& action = actions_[slot - end_slot_ - 1];
+      time_ = action.next_time;
+      action.action();
+      action.next_time += action.interval;
+      calendar_.set(slot, action.next_time);
+    }
+  }
+}
+
+void Simulator::advance(std::int32_t i, double t) {
+  ParticleStore& p = system_.particles;
+  const double dt = t - p.clock[i];
+  if (dt == 0.0) return;
+  if (has_gravity_) {
+    p.position[i] = system_.flight.position(p.position[i], p.velocity[i], dt);
+    p.velocity[i] = system_.flight.velocity(p.velocity[i], dt);
+  } else {
+    p.position[i] += dt * p.velocity[i];
+  }
+  p.clock[i] = t;
+}
+
+Vec3 Simulator::position(std::size_t i) const {
+  const ParticleStore& p = system_.particles;
+  return system_.flight.position(p.position[i], p.velocity[i], time_ - p.clock[i]);
+}
+
+Vec3 Simulator::velocity(std::size_t i) const {
+  const ParticleStore& p = system_.particles;
+  return system_.flight.velocity(p.velocity[i], time_ - p.clock[i]);
+}
+
+Energies Simulator::energies() const {
+  Energies e;
+  const ParticleStore& p = system_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    e.translational += 0.5 * p.mass[i] * velocity(i).squaredNorm();
+    e.rotational += 0.5 * p.inertia[i] * p.spin[i].squaredNorm();
+    e.potential -= p.mass[i] * system_.flight.gravity.dot(position(i));
+  }
+  e.dissipated = statistics_.dissipated_energy;
+  return e;
+}
+
+void Simulator::process_particle_event(std::int32_t i) {
+  const Event event = events_[i];
+  switch (event.kind) {
+    case EventKind::Pair:
+      if (system_.particles.event_counter[event.partner] != event.partner_counter) {
+        ++statistics_.invalid_events;
+        predict(i);
+        return;
+      }
+      collide_pair(i, event.partner, event.time);
+      break;
+    case EventKind::Wall:
+      collide_wall(i, event.partner, event.time);
+      break;
+    case EventKind::CellCrossing:
+      last_particle_event_ = time_ = event.time;
+      cross_cell(i, event.partner);
+      break;
+    case EventKind::None:
+      // Only reachable if a particle has nothing to do and the run has no end: wait.
+      calendar_.set(i, kNever);
+      return;
+  }
+  ++statistics_.events;
+}
+
+}  // namespace carom

@@ -1,0 +1,113 @@
+#pragma once
+/// The event loop: exact hard-sphere dynamics from event to event.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/cell_grid.hpp"
+#include "core/system.hpp"
+#include "events/calendar.hpp"
+#include "events/collapse.hpp"
+#include "events/event.hpp"
+#include "events/statistics.hpp"
+
+namespace carom {
+
+struct SimulatorOptions {
+  CollapseOptions collapse;   ///< TC model, low-speed elasticity, stall detector.
+  /// Size ratio below which a smaller species gets its own grid level (0: one grid for all).
+  double grid_level_ratio = 0.5;
+  /// Check the invariants at every collision (no overlap, momentum balance). On by default in
+  /// debug builds; costs a few percent.
+#ifdef NDEBUG
+  bool check_invariants = false;
+#else
+  bool check_invariants = true;
+#endif
+};
+
+/// Kinetic, potential and dissipated energy at the current time, J.
+struct Energies {
+  double translational = 0;  ///< sum m v^2 / 2.
+  double rotational = 0;     ///< sum I w^2 / 2.
+  double potential = 0;      ///< sum -m g . r (positions folded into the box).
+  double dissipated = 0;     ///< Lost in collisions since the start.
+  /// translational + rotational + potential + dissipated: constant in an exact run.
+  double total() const { return translational + rotational + potential + dissipated; }
+};
+
+/// A periodic global event: `action` runs at first, first + interval, ...
+struct PeriodicAction {
+  std::string name;                 ///< For diagnostics ("sample", "checkpoint").
+  double next_time = kNever;        ///< Next time it fires, s.
+  double interval = kNever;         ///< Period, s.
+  std::function<void()> action;     ///< What it does; it may read but not change the particles.
+};
+
+class Simulator {
+ public:
+  /// Takes the system, validates the initial state (throws std::invalid_argument), builds the
+  /// grid and predicts every particle's first event.
+  explicit Simulator(System system, SimulatorOptions options = {});
+
+  /// Processes every event up to time t_end (s) and stops there.
+  /// Throws InelasticCollapse when the stall detector fires.
+  void run_until(double t_end);
+
+  /// Registers an action to run at first_time and then every interval seconds (a global event).
+  void add_periodic_action(std::string name, double first_time, double interval,
+                           std::function<void()> action);
+
+  /// The current time, s.
+  double time() const { return time_; }
+  const System& system() const { return system_; }
+  const SimulatorOptions& options() const { return options_; }
+  const RunStatistics& statistics() const { return statistics_; }
+  const HierarchicalGrid& grid() const { return grid_; }
+  std::size_t particle_count() const { return system_.particles.size(); }
+
+  /// Particle i's position at the current time, m (its stored state is not changed).
+  Vec3 position(std::size_t i) const;
+  /// Particle i's velocity at the current time, m/s.
+  Vec3 velocity(std::size_t i) const;
+  /// Particle i's spin, rad/s.
+  const Vec3& spin(std::size_t i) const { return system_.particles.spin[i]; }
+  Energies energies() const;
+
+  /// The event each particle is waiting for (the calendar's particle entries).
+  const std::vector<Event>& predicted_events() const { return events_; }
+
+ private:
+  void predict(std::int32_t i);
+  double pair_time(std::int32_t i, std::int32_t j) const;
+  double wall_time(std::int32_t i, const Wall& wall) const;
+  void cell_crossing(std::int32_t i, Event& best) const;
+
+  void process_particle_event(std::int32_t i);
+  void collide_pair(std::int32_t i, std::int32_t j, double t);
+  void collide_wall(std::int32_t i, std::int32_t w, double t);
+  void cross_cell(std::int32_t i, int face);
+  void advance(std::int32_t i, double t);
+  ContactLaw effective_law(const ContactLaw& law, double normal_speed, double t, std::int32_t i,
+                           std::int32_t j) const;
+  void book_collision(std::int32_t i, double t, const std::string& partner);
+  void check_pair_invariants(std::int32_t i, std::int32_t j, const Vec3& momentum_before) const;
+
+  System system_;
+  SimulatorOptions options_;
+  HierarchicalGrid grid_;
+  Calendar calendar_;
+  std::vector<Event> events_;            ///< Slot i: particle i's earliest event.
+  std::vector<PeriodicAction> actions_;  ///< Slot N + 1 + k: action k.
+  std::size_t end_slot_ = 0;             ///< Slot N: the end of the current run_until.
+  double time_ = 0;                      ///< Time of the last processed event, s.
+  double last_particle_event_ = 0;       ///< Time of the last processed particle event, s.
+  RunStatistics statistics_;
+  bool has_gravity_ = false;
+  std::vector<double> stall_window_start_;     ///< Per particle: start of its stall window, s.
+  std::vector<std::uint32_t> stall_count_;     ///< Per particle: collisions in that window.
+  double stall_window_ = 0;                    ///< s.
+};
+
+}  // namespace carom

@@ -1,0 +1,40 @@
+#pragma once
+/// Counters booked exactly at events: collisions per species pair and wall, virial, energy lost.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace carom {
+
+struct RunStatistics {
+  std::size_t species_count = 0;
+  std::size_t wall_count = 0;
+  /// Collisions between species s and t, stored symmetric at [s * S + t] and [t * S + s].
+  std::vector<std::uint64_t> pair_collisions;
+  /// Collisions of species s with wall w at [s * W + w].
+  std::vector<std::uint64_t> wall_collisions;
+  /// Total impulse given to each wall by the particles, N s (for wall pressures).
+  std::vector<Eigen::Vector3d> wall_impulse;
+  /// Collision virial sum over pair collisions of r_ij (x) J_i, in J s (divide by V t for stress).
+  Eigen::Matrix3d virial = Eigen::Matrix3d::Zero();
+  double dissipated_energy = 0;        ///< Kinetic energy lost in collisions, J.
+  std::uint64_t events = 0;            ///< Events processed (valid ones).
+  std::uint64_t invalid_events = 0;    ///< Events popped and dropped (lazy invalidation).
+  std::uint64_t pair_events = 0;       ///< Pair collisions.
+  std::uint64_t wall_events = 0;       ///< Wall collisions.
+  std::uint64_t cell_crossings = 0;    ///< Neighbour-grid cell crossings.
+
+  void resize(std::size_t species, std::size_t walls) {
+    species_count = species;
+    wall_count = walls;
+    pair_collisions.assign(species * species, 0);
+    wall_collisions.assign(species * walls, 0);
+    wall_impulse.assign(walls, Eigen::Vector3d::Zero());
+  }
+  std::uint64_t pair(std::size_t s, std::size_t t) const { return pair_collisions[s * species_count + t]; }
+  std::uint64_t wall(std::size_t s, std::size_t w) const { return wall_collisions[s * wall_count + w]; }
+  /// All collisions (pair + wall).
+  std::uint64_t collisions() const { return pair_events + wall_events; }
+};
+
+}  // namespace carom

@@ -1,0 +1,83 @@
+// carom_bench: collisions per second of the elastic hard-sphere fluid, with the physics printed
+// beside the speed so that speed is never bought with wrong physics.
+//
+//   carom_bench --n 32000 --phi 0.40
+//   carom_bench --n 100000 --phi 0.3 --ratio 0.2 --fines 0.5
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "events/simulator.hpp"
+#include "scenarios/granular_gas.hpp"
+
+using namespace carom;
+
+int main(int argc, char** argv) {
+  CLI::App app{"carom_bench: event-driven hard-sphere fluid benchmark"};
+  GranularGasSpec spec;
+  double equilibrate = 5.0, measure = 20.0, level_ratio = 0.5;
+  app.add_option("--n", spec.count, "number of particles (monodisperse: rounded to 4 k^3)");
+  app.add_option("--phi", spec.volume_fraction, "solid volume fraction")->check(CLI::Range(0.001, 0.7));
+  app.add_option("--ratio", spec.fines_diameter_ratio, "fines / large diameter ratio (1: monodisperse)");
+  app.add_option("--fines", spec.fines_number_fraction, "number fraction of fines");
+  app.add_option("--equilibrate", equilibrate, "collisions per particle before measuring");
+  app.add_option("--measure", measure, "collisions per particle measured");
+  app.add_option("--grid-ratio", level_ratio, "size ratio that starts a new grid level (0: one grid)");
+  app.add_option("--seed", spec.seed, "random seed");
+  CLI11_PARSE(app, argc, argv);
+
+  const System system = make_granular_gas(spec);
+  SimulatorOptions options;
+  options.grid_level_ratio = level_ratio;
+  options.check_invariants = false;
+  Simulator sim(system, options);
+  const std::size_t n = sim.particle_count();
+  const double volume = sim.system().domain.volume();
+  std::printf("particles=%zu species=%zu grid_levels=%zu box=%.4g\n", n, sim.system().species.size(),
+              sim.grid().levels().size(), sim.system().domain.length().x());
+
+  // Time for one collision per particle, estimated from Enskog for the large species.
+  const double number_density = n / volume, phi = spec.volume_fraction;
+  const double g0 = (1 - phi / 2) / std::pow(1 - phi, 3);
+  const double mass = sim.system().species[0].mass(), d = spec.diameter;
+  const double enskog_rate = 4 * number_density * d * d * g0 * std::sqrt(std::numbers::pi * spec.temperature / mass);
+  const double chunk = 1.0 / enskog_rate;
+
+  auto run_collisions = [&](double per_particle) {
+    const std::uint64_t target = sim.statistics().pair_events + static_cast<std::uint64_t>(per_particle * n / 2);
+    while (sim.statistics().pair_events < target) sim.run_until(sim.time() + chunk);
+  };
+  run_collisions(equilibrate);
+
+  const RunStatistics before = sim.statistics();
+  const double t0 = sim.time();
+  const auto wall0 = std::chrono::steady_clock::now();
+  run_collisions(measure);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const RunStatistics& after = sim.statistics();
+  const double dt = sim.time() - t0;
+  const std::uint64_t collisions = after.pair_events - before.pair_events;
+
+  const Energies e = sim.energies();
+  const double temperature = 2.0 * (e.translational) / (3.0 * n);
+  const double virial = (after.virial - before.virial).trace();
+  const double pressure = (n * temperature + virial / (3.0 * dt)) / volume;
+  const double reduced_pressure = pressure * d * d * d / temperature;
+  const double rate = 2.0 * collisions / (n * dt);
+  std::printf("temperature=%.6f\n", temperature);
+  std::printf("pressure=%.5f\n", reduced_pressure);
+  std::printf("collision_rate=%.5f\n", rate);
+  if (sim.system().species.size() == 1) {
+    std::printf("enskog_pressure=%.5f\n", number_density * d * d * d * (1 + 4 * phi * g0));
+    std::printf("enskog_collision_rate=%.5f\n",
+                4 * number_density * d * d * g0 * std::sqrt(std::numbers::pi * temperature / mass));
+  }
+  std::printf("events=%llu invalid_events=%llu cell_crossings=%llu wall_seconds=%.3f\n",
+              static_cast<unsigned long long>(after.events - before.events),
+              static_cast<unsigned long long>(after.invalid_events - before.invalid_events),
+              static_cast<unsigned long long>(after.cell_crossings - before.cell_crossings), wall);
+  std::printf("collisions_per_second=%.0f\n", collisions / wall);
+  return 0;
+}

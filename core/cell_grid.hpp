@@ -37,6 +37,11 @@ class HierarchicalGrid {
 
   /// Places particle i (centre r) in its cell, on its level.
   void insert(std::int32_t i, const Vec3& r);
+  /// Places particle i in the given cell of its level (restoring a saved state).
+  void insert_at(std::int32_t i, const std::array<int, 3>& cell) {
+    coords_[i] = cell;
+    link(i);
+  }
   /// Takes particle i out of the grid (it can be inserted again).
   void remove(std::int32_t i) { unlink(i); }
   /// Moves particle i to the neighbouring cell across face (axis, +1 or -1), wrapping periodic axes.

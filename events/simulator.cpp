@@ -77,9 +77,51 @@ Simulator::Simulator(System system, SimulatorOptions options)
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
 
+Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
+    : system_(std::move(system)), options_(options) {
+  system_.particles = std::move(state.particles);
+  const std::size_t n = system_.particles.size();
+  if (state.cells.size() != n || state.events.size() != n || state.stall_count.size() != n ||
+      state.stall_window_start.size() != n)
+    throw std::invalid_argument("saved state: the arrays do not all hold one entry per particle");
+  grid_ = HierarchicalGrid(system_.domain, system_.particles.radius, options_.grid_level_ratio);
+  for (std::size_t i = 0; i < n; ++i) grid_.insert_at(static_cast<std::int32_t>(i), state.cells[i]);
+  has_gravity_ = system_.flight.has_gravity();
+  events_ = std::move(state.events);
+  end_slot_ = n;
+  calendar_.resize(n + 1);
+  for (std::size_t i = 0; i < n; ++i) calendar_.set(i, events_[i].time);
+  time_ = state.time;
+  last_particle_event_ = state.last_particle_event;
+  statistics_ = std::move(state.statistics);
+  stall_window_start_ = std::move(state.stall_window_start);
+  stall_count_ = std::move(state.stall_count);
+  stall_window_ = state.stall_window;
+  restored_action_times_ = std::move(state.action_times);
+}
+
+EngineState Simulator::state() const {
+  EngineState s;
+  s.particles = system_.particles;
+  const std::size_t n = system_.particles.size();
+  s.cells.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
+  s.events = events_;
+  s.time = time_;
+  s.last_particle_event = last_particle_event_;
+  s.statistics = statistics_;
+  s.stall_window_start = stall_window_start_;
+  s.stall_count = stall_count_;
+  s.stall_window = stall_window_;
+  for (const PeriodicAction& a : actions_) s.action_times.emplace_back(a.name, a.next_time);
+  return s;
+}
+
 void Simulator::add_periodic_action(std::string name, double first_time, double interval,
                                     std::function<void()> action) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
+  for (const auto& [saved_name, saved_time] : restored_action_times_)
+    if (saved_name == name) first_time = saved_time;
   actions_.push_back(PeriodicAction{std::move(name), first_time, interval, std::move(action)});
   calendar_.resize(end_slot_ + 1 + actions_.size());
   calendar_.set(end_slot_ + actions_.size(), first_time);

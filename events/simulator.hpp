@@ -45,11 +45,36 @@ struct PeriodicAction {
   std::function<void()> action;     ///< What it does; it may read but not change the particles.
 };
 
+/// Everything needed to continue a run exactly (bit for bit) from where it stopped: the
+/// particles' stored (delayed) states, their grid cells, the calendar's particle entries, the
+/// counters and the clocks. The System's other parts (box, walls, species, laws) come from the
+/// scene again.
+struct EngineState {
+  ParticleStore particles;                          ///< In the simulator's internal order.
+  std::vector<std::array<int, 3>> cells;            ///< Grid cell of each particle.
+  std::vector<Event> events;                        ///< Each particle's predicted event.
+  double time = 0;                                  ///< s.
+  double last_particle_event = 0;                   ///< s.
+  RunStatistics statistics;
+  std::vector<double> stall_window_start;           ///< s.
+  std::vector<std::uint32_t> stall_count;
+  double stall_window = 0;                          ///< s.
+  std::vector<std::pair<std::string, double>> action_times;  ///< Next time of each action, s.
+};
+
 class Simulator {
  public:
   /// Takes the system, validates the initial state (throws std::invalid_argument), builds the
   /// grid and predicts every particle's first event.
   explicit Simulator(System system, SimulatorOptions options = {});
+
+  /// Continues a saved run: `system` supplies box, walls, species and laws (its particles are
+  /// ignored), `state` everything that moves. Actions added later under a saved name resume at
+  /// their saved next time.
+  Simulator(System system, SimulatorOptions options, EngineState state);
+
+  /// A copy of the complete dynamic state (see EngineState).
+  EngineState state() const;
 
   /// Processes every event up to time t_end (s) and stops there.
   /// Throws InelasticCollapse when the stall detector fires.
@@ -108,6 +133,7 @@ class Simulator {
   std::vector<double> stall_window_start_;     ///< Per particle: start of its stall window, s.
   std::vector<std::uint32_t> stall_count_;     ///< Per particle: collisions in that window.
   double stall_window_ = 0;                    ///< s.
+  std::vector<std::pair<std::string, double>> restored_action_times_;
 };
 
 }  // namespace carom

@@ -2,32 +2,107 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace carom {
 
+namespace {
+/// Expected work of one prediction sweep over all particles for a given split of the sizes
+/// into levels: cells visited plus partners examined, per particle, summed. Cells are taken as
+/// cubes of the level's diameter / subdivision; particles as uniformly spread.
+double prediction_cost(const Domain& domain, const std::vector<double>& sizes,
+                       const std::vector<double>& counts, const std::vector<int>& level_of_size,
+                       int levels, int subdivision) {
+  const double volume = domain.volume();
+  std::vector<double> cell(levels, 0.0), density(levels, 0.0), max_diameter(levels, 0.0);
+  double total_cells = 0.0;
+  for (std::size_t s = 0; s < sizes.size(); ++s) {
+    const int l = level_of_size[s];
+    max_diameter[l] = std::max(max_diameter[l], sizes[s]);
+    density[l] += counts[s] / volume;
+  }
+  for (int l = 0; l < levels; ++l) {
+    cell[l] = max_diameter[l] / subdivision;
+    total_cells += volume / (cell[l] * cell[l] * cell[l]);
+  }
+  double particles = 0.0;
+  for (double c : counts) particles += c;
+  if (total_cells > 8.0 * particles + 1e6) return std::numeric_limits<double>::infinity();
+  double cost = 0.0;
+  for (std::size_t s = 0; s < sizes.size(); ++s) {
+    const int own = level_of_size[s];
+    for (int l = 0; l < levels; ++l) {
+      const double span = l == own ? 2 * subdivision + 1
+                                   : (cell[own] + sizes[s] + max_diameter[l]) / cell[l] + 1.0;
+      const double cells = span * span * span;
+      cost += counts[s] * cells * (1.0 + cell[l] * cell[l] * cell[l] * density[l]);
+    }
+  }
+  return cost;
+}
+}  // namespace
+
+std::vector<double> HierarchicalGrid::cheapest_levels(const Domain& domain, const std::vector<double>& sizes,
+                                                      const std::vector<double>& counts, int subdivision) {
+  // Every split of the sorted sizes into consecutive groups (2^(k-1) of them, k <= 12).
+  const std::size_t k = sizes.size();
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::vector<double> best{sizes.front()};
+  for (std::uint32_t mask = 0; mask < (1u << (k - 1)); ++mask) {
+    std::vector<int> level_of_size(k, 0);
+    std::vector<double> nominal{sizes[0]};
+    for (std::size_t s = 1; s < k; ++s) {
+      const bool split = (mask >> (s - 1)) & 1u;
+      if (split) nominal.push_back(sizes[s]);
+      level_of_size[s] = static_cast<int>(nominal.size()) - 1;
+    }
+    const double cost = prediction_cost(domain, sizes, counts, level_of_size,
+                                        static_cast<int>(nominal.size()), subdivision);
+    if (cost < best_cost * (1.0 - 1e-9)) {
+      best_cost = cost;
+      best = nominal;
+    }
+  }
+  return best;
+}
+
 HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<double>& radius,
-                                   double level_ratio)
-    : domain_(domain) {
+                                   double level_ratio, int subdivision)
+    : domain_(domain), reach_(subdivision) {
+  if (subdivision < 1 || subdivision > kMaxSubdivision)
+    throw std::invalid_argument("grid subdivision must be between 1 and " + std::to_string(kMaxSubdivision));
   std::vector<double> diameters;
   for (double a : radius) diameters.push_back(2.0 * a);
   std::sort(diameters.begin(), diameters.end(), std::greater<>());
-  diameters.erase(std::unique(diameters.begin(), diameters.end()), diameters.end());
-  if (diameters.empty()) diameters.push_back(domain.length().minCoeff() / 3.0);
-
-  // Greedy levels, largest first.
+  std::vector<double> sizes;      // distinct diameters, largest first
+  std::vector<double> counts;     // particles of each
   for (double d : diameters) {
-    if (level_diameter_.empty() || d < level_ratio * level_diameter_.back())
-      level_diameter_.push_back(d);
+    if (sizes.empty() || d != sizes.back()) {
+      sizes.push_back(d);
+      counts.push_back(0.0);
+    }
+    counts.back() += 1.0;
+  }
+  if (sizes.empty()) {
+    sizes.push_back(domain.length().minCoeff() / 3.0);
+    counts.push_back(0.0);
+  }
+  if (level_ratio < 0.0 && sizes.size() <= 12) {
+    level_diameter_ = cheapest_levels(domain, sizes, counts, subdivision);
+  } else {
+    // Largest first; a size below level_ratio times the current level's starts a new level.
+    for (double d : sizes)
+      if (level_diameter_.empty() || d < level_ratio * level_diameter_.back()) level_diameter_.push_back(d);
   }
   const Vec3 length = domain.length();
   for (double d : level_diameter_) {
     Level grid;
     for (int k = 0; k < 3; ++k) {
-      int n = static_cast<int>(std::floor(length[k] / d));
+      int n = static_cast<int>(std::floor(length[k] * subdivision / d));
       n = std::clamp(n, 1, 1 << 20);
-      if (domain.periodic[k] && n < 3)
+      if (domain.periodic[k] && n < 2 * subdivision + 1)
         throw std::invalid_argument(
             "periodic axis " + std::string(1, "xyz"[k]) + " is " + std::to_string(length[k]) +
             " m long; it must be at least 3 particle diameters (" + std::to_string(3 * d) + " m)");
@@ -39,6 +114,10 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
       throw std::invalid_argument("the cell grid for diameter " + std::to_string(d) + " m needs " +
                                   std::to_string(total) + " cells; the domain is too large");
     grid.head.assign(static_cast<std::size_t>(total), -1);
+    for (int dz = -reach_; dz <= reach_; ++dz)
+      for (int dy = -reach_; dy <= reach_; ++dy)
+        for (int dx = -reach_; dx <= reach_; ++dx)
+          grid.block_offsets.push_back(dx + grid.cells[0] * (dy + grid.cells[1] * dz));
     levels_.push_back(std::move(grid));
   }
   const std::size_t n = radius.size();
@@ -106,27 +185,75 @@ Vec3 HierarchicalGrid::cross(std::int32_t i, int axis, int direction) {
   return shift;
 }
 
-Vec3 HierarchicalGrid::cell_lower(std::int32_t i) const {
-  const Level& grid = levels_[level_[i]];
+
+
+
+int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const {
+  const int level = level_[i];
+  const auto& n = levels_[level].cells;
   const auto& c = coords_[i];
-  return {domain_.lower.x() + c[0] * grid.cell_size.x(), domain_.lower.y() + c[1] * grid.cell_size.y(),
-          domain_.lower.z() + c[2] * grid.cell_size.z()};
+  wrapped = false;
+  const int m = reach_;
+  if (c[0] >= m && c[0] + m < n[0] && c[1] >= m && c[1] + m < n[1] && c[2] >= m && c[2] + m < n[2]) {
+    // Interior cell: fixed offsets, no wrapping.
+    const std::int32_t centre = flat_index(level, c);
+    const auto& offsets = levels_[level].block_offsets;
+    const int count = static_cast<int>(offsets.size());
+    for (int k = 0; k < count; ++k) cells[k] = centre + offsets[k];
+    return count;
+  }
+  // Boundary cell: per axis, the neighbours that exist (walled) or wrap (periodic, n >= 3).
+  int index[3][2 * kMaxSubdivision + 1], count[3];
+  for (int k = 0; k < 3; ++k) {
+    count[k] = 0;
+    for (int d = -m; d <= m; ++d) {
+      int idx = c[k] + d;
+      if (idx < 0 || idx >= n[k]) {
+        if (!domain_.periodic[k]) continue;
+        idx += idx < 0 ? n[k] : -n[k];
+        wrapped = true;
+      }
+      index[k][count[k]++] = idx;
+    }
+  }
+  int total = 0;
+  for (int a = 0; a < count[2]; ++a)
+    for (int b = 0; b < count[1]; ++b) {
+      const int row = n[0] * (index[1][b] + n[1] * index[2][a]);
+      for (int d = 0; d < count[0]; ++d) cells[total++] = index[0][d] + row;
+    }
+  return total;
 }
 
-Vec3 HierarchicalGrid::cell_upper(std::int32_t i) const {
-  const Level& grid = levels_[level_[i]];
+int HierarchicalGrid::own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells,
+                               bool& wrapped) const {
+  const int level = level_[i];
+  const auto& n = levels_[level].cells;
   const auto& c = coords_[i];
-  auto edge = [&](int k) {
-    return c[k] + 1 == grid.cells[k] ? domain_.upper[k]
-                                     : domain_.lower[k] + (c[k] + 1) * grid.cell_size[k];
-  };
-  return {edge(0), edge(1), edge(2)};
-}
-
-bool HierarchicalGrid::is_outer_face(std::int32_t i, int axis, int direction) const {
-  if (domain_.periodic[axis]) return false;
-  const int idx = coords_[i][axis];
-  return direction < 0 ? idx == 0 : idx + 1 == levels_[level_[i]].cells[axis];
+  const int m = reach_;
+  wrapped = false;
+  int index[3][2 * kMaxSubdivision + 1], count[3];
+  for (int k = 0; k < 3; ++k) {
+    count[k] = 0;
+    const int from = k == axis ? direction * m : -m;
+    const int to = k == axis ? direction * m : m;
+    for (int d = from; d <= to; ++d) {
+      int idx = c[k] + d;
+      if (idx < 0 || idx >= n[k]) {
+        if (!domain_.periodic[k]) continue;
+        idx += idx < 0 ? n[k] : -n[k];
+        wrapped = true;
+      }
+      index[k][count[k]++] = idx;
+    }
+  }
+  int total = 0;
+  for (int a = 0; a < count[2]; ++a)
+    for (int b = 0; b < count[1]; ++b) {
+      const int row = n[0] * (index[1][b] + n[1] * index[2][a]);
+      for (int d = 0; d < count[0]; ++d) cells[total++] = index[0][d] + row;
+    }
+  return total;
 }
 
 HierarchicalGrid::AxisRange HierarchicalGrid::clip(int level, int k, int first, int last) const {

@@ -26,14 +26,28 @@ class HierarchicalGrid {
     Vec3 cell_size = Vec3::Ones();      ///< Cell edge per axis, m (>= the largest diameter).
     double max_radius = 0;              ///< Largest particle radius in this level, m.
     std::vector<std::int32_t> head;     ///< First particle of each cell's list, or -1.
+    std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the 27 cells around a cell.
   };
 
   HierarchicalGrid() = default;
-  /// Builds the levels for particles of the given radii. A smaller size starts a new level when
-  /// its diameter is below `level_ratio` times the current level's; level_ratio = 0 puts every
-  /// particle in one grid (for comparison). Throws std::invalid_argument when a periodic axis is
+  /// Builds the levels for particles of the given radii. level_ratio < 0 (the default) picks
+  /// the split of sizes into levels with the least expected prediction work (cells visited plus
+  /// partners examined, from the sizes, counts and box volume); level_ratio > 0 starts a new
+  /// level whenever a diameter is below level_ratio times the current level's; level_ratio = 0
+  /// puts every particle in one grid. Throws std::invalid_argument when a periodic axis is
   /// shorter than three cells.
-  HierarchicalGrid(const Domain& domain, const std::vector<double>& radius, double level_ratio = 0.5);
+  /// `subdivision` m cuts each level's cells to 1/m of its largest diameter; the own-level
+  /// search block is then (2m+1)^3 cells.
+  HierarchicalGrid(const Domain& domain, const std::vector<double>& radius, double level_ratio = -1.0,
+                   int subdivision = 1);
+  /// The nominal diameters of the cheapest levels for distinct `sizes` (largest first) with
+  /// `counts` particles each (see the constructor).
+  static std::vector<double> cheapest_levels(const Domain& domain, const std::vector<double>& sizes,
+                                             const std::vector<double>& counts, int subdivision);
+  /// Largest supported subdivision.
+  static constexpr int kMaxSubdivision = 3;
+  /// Largest number of cells in an own-level block.
+  static constexpr int kMaxBlock = (2 * kMaxSubdivision + 1) * (2 * kMaxSubdivision + 1) * (2 * kMaxSubdivision + 1);
 
   /// Places particle i (centre r) in its cell, on its level.
   void insert(std::int32_t i, const Vec3& r);
@@ -53,19 +67,56 @@ class HierarchicalGrid {
   /// Cell coordinates of particle i on its level.
   const std::array<int, 3>& cell_of(std::int32_t i) const { return coords_[i]; }
   /// Lower corner of particle i's cell, m.
-  Vec3 cell_lower(std::int32_t i) const;
-  /// Upper corner of particle i's cell, m.
-  Vec3 cell_upper(std::int32_t i) const;
+  Vec3 cell_lower(std::int32_t i) const {
+    const Level& grid = levels_[level_[i]];
+    const auto& c = coords_[i];
+    return {domain_.lower.x() + c[0] * grid.cell_size.x(), domain_.lower.y() + c[1] * grid.cell_size.y(),
+            domain_.lower.z() + c[2] * grid.cell_size.z()};
+  }
+  /// Upper corner of particle i's cell, m (the box's upper face exactly for the last cell).
+  Vec3 cell_upper(std::int32_t i) const {
+    const Level& grid = levels_[level_[i]];
+    const auto& c = coords_[i];
+    Vec3 upper;
+    for (int k = 0; k < 3; ++k)
+      upper[k] = c[k] + 1 == grid.cells[k] ? domain_.upper[k]
+                                           : domain_.lower[k] + (c[k] + 1) * grid.cell_size[k];
+    return upper;
+  }
   /// True when the face (axis, direction) of particle i's cell is on the boundary of a walled
   /// (non-periodic) axis, so that no crossing through it is ever expected.
-  bool is_outer_face(std::int32_t i, int axis, int direction) const;
+  bool is_outer_face(std::int32_t i, int axis, int direction) const {
+    if (domain_.periodic[axis]) return false;
+    const int idx = coords_[i][axis];
+    return direction < 0 ? idx == 0 : idx + 1 == levels_[level_[i]].cells[axis];
+  }
 
   const std::vector<Level>& levels() const { return levels_; }
   const Domain& domain() const { return domain_; }
 
   /// Calls visit(j) for every particle j != i that could touch i while i stays in its cell.
   template <class Visit>
-  void for_each_candidate(std::int32_t i, double radius_i, Visit&& visit) const;
+  void for_each_candidate(std::int32_t i, double radius_i, Visit&& visit) const {
+    for_each_candidate_on_levels(i, radius_i, /*include_own=*/true, visit);
+  }
+  /// As for_each_candidate, but only on the levels other than i's own.
+  template <class Visit>
+  void for_each_candidate_on_other_levels(std::int32_t i, double radius_i, Visit&& visit) const {
+    for_each_candidate_on_levels(i, radius_i, /*include_own=*/false, visit);
+  }
+  /// The fast path for i's own level: writes the flat indices of the (at most 27) cells of the
+  /// block around i's cell into `cells` and returns how many. `wrapped` tells whether the block
+  /// crosses a periodic boundary (then partners need the minimum image).
+  int own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const;
+  /// The cells that entered i's own-level block when it just crossed into its cell along
+  /// (axis, direction): the far face layer of the block. Same conventions as own_block.
+  int own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells, bool& wrapped) const;
+  /// First particle in flat cell `cell` of `level`, or -1.
+  std::int32_t head(int level, std::int32_t cell) const { return levels_[level].head[cell]; }
+  /// The particle after j in its cell's list, or -1.
+  std::int32_t next(std::int32_t j) const { return next_[j]; }
+  /// The neighbour lists (index by particle).
+  const std::int32_t* next_array() const { return next_.data(); }
 
   /// Cell coordinates on `level` of a point (clamped into the grid).
   std::array<int, 3> cell_coordinates(int level, const Vec3& r) const;
@@ -77,6 +128,8 @@ class HierarchicalGrid {
   }
   void link(std::int32_t i);
   void unlink(std::int32_t i);
+  template <class Visit>
+  void for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own, Visit&& visit) const;
   /// A run of consecutive cell indices along one axis, wrapped on periodic axes.
   struct AxisRange {
     int first = 0;   ///< First index (may be negative or past the end before wrapping).
@@ -94,6 +147,7 @@ class HierarchicalGrid {
   AxisRange covering(int level, int k, double lo, double hi) const;
 
   Domain domain_;
+  int reach_ = 1;  ///< Own-level block half-width in cells (the subdivision).
   std::vector<Level> levels_;
   std::vector<double> level_diameter_;  ///< Nominal (largest) diameter of each level, m.
   std::vector<std::int32_t> next_, prev_;
@@ -102,16 +156,19 @@ class HierarchicalGrid {
 };
 
 template <class Visit>
-void HierarchicalGrid::for_each_candidate(std::int32_t i, double radius_i, Visit&& visit) const {
+void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own,
+                                                    Visit&& visit) const {
   const int own = level_[i];
-  const Vec3 lower = cell_lower(i), upper = cell_upper(i);
   for (int level = 0; level < static_cast<int>(levels_.size()); ++level) {
+    if (level == own && !include_own) continue;
     const Level& grid = levels_[level];
     AxisRange range[3];
     if (level == own) {
       // The 3x3x3 block: the cell is wider than any contact distance within the level.
-      for (int k = 0; k < 3; ++k) range[k] = clip(level, k, coords_[i][k] - 1, coords_[i][k] + 1);
+      for (int k = 0; k < 3; ++k)
+        range[k] = clip(level, k, coords_[i][k] - reach_, coords_[i][k] + reach_);
     } else {
+      const Vec3 lower = cell_lower(i), upper = cell_upper(i);
       const double reach = radius_i + grid.max_radius;
       for (int k = 0; k < 3; ++k) range[k] = covering(level, k, lower[k] - reach, upper[k] + reach);
     }

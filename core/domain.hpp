@@ -17,11 +17,15 @@ struct Domain {
   double volume() const { return length().prod(); }
 
   /// Maps a separation vector to its nearest periodic image (unchanged on walled axes).
+  /// Valid for separations shorter than 1.5 box lengths, as between stored particle states.
   void minimum_image(Vec3& separation) const {
     for (int k = 0; k < 3; ++k) {
       if (!periodic[k]) continue;
       const double length_k = upper[k] - lower[k];
-      separation[k] -= length_k * std::nearbyint(separation[k] / length_k);
+      if (separation[k] > 0.5 * length_k)
+        separation[k] -= length_k;
+      else if (separation[k] < -0.5 * length_k)
+        separation[k] += length_k;
     }
   }
 };

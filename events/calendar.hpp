@@ -47,7 +47,7 @@ class Calendar {
       return a.time > b.time || (a.time == b.time && a.slot > b.slot);
     }
   };
-  using Heap = boost::heap::d_ary_heap<Entry, boost::heap::arity<4>, boost::heap::mutable_<true>,
+  using Heap = boost::heap::d_ary_heap<Entry, boost::heap::arity<8>, boost::heap::mutable_<true>,
                                        boost::heap::compare<Later>>;
   Heap heap_;
   std::vector<Heap::handle_type> handles_;

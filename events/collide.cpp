@@ -51,10 +51,12 @@ void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
   statistics_.dissipated_energy += outcome.dissipated;
   ++p.event_counter[i];
   ++p.event_counter[j];
+  refresh_hot(i);
+  refresh_hot(j);
   predict(i);
   predict(j);
-  book_collision(i, t, "particle " + std::to_string(p.id[j]));
-  book_collision(j, t, "particle " + std::to_string(p.id[i]));
+  book_collision(i, t, j);
+  book_collision(j, t, i);
   p.last_collision[i] = p.last_collision[j] = t;
 }
 
@@ -81,19 +83,29 @@ void Simulator::collide_wall(std::int32_t i, std::int32_t w, double t) {
   statistics_.wall_impulse[w] -= outcome.impulse;
   statistics_.dissipated_energy += outcome.dissipated;
   ++p.event_counter[i];
+  refresh_hot(i);
   predict(i);
-  book_collision(i, t, "wall '" + wall.name + "'");
+  book_collision(i, t, -1 - w);
   p.last_collision[i] = t;
 }
 
 void Simulator::cross_cell(std::int32_t i, int face) {
-  const Vec3 shift = grid_.cross(i, face / 2, (face % 2) ? +1 : -1);
+  const int axis = face / 2, direction = (face % 2) ? +1 : -1;
+  const Vec3 shift = grid_.cross(i, axis, direction);
   system_.particles.position[i] += shift;  // a periodic wrap moves the stored state by one box
+  hot_[i].position = system_.particles.position[i];
   ++statistics_.cell_crossings;
-  predict(i);  // same trajectory: partners' predictions with i stay valid (no counter bump)
+  // Same trajectory: partners' predictions with i stay valid (no counter bump), and so does
+  // i's own next collision; only the cells that just came into reach need a look.
+  if (grid_.levels().size() > 1)
+    predict(i);
+  else if (has_gravity_)
+    predict_after_crossing<true>(i, axis, direction);
+  else
+    predict_after_crossing<false>(i, axis, direction);
 }
 
-void Simulator::book_collision(std::int32_t i, double t, const std::string& partner) {
+void Simulator::book_collision(std::int32_t i, double t, std::int32_t partner_code) {
   if (t - stall_window_start_[i] > stall_window_) {
     stall_window_start_[i] = t;
     stall_count_[i] = 1;
@@ -101,6 +113,9 @@ void Simulator::book_collision(std::int32_t i, double t, const std::string& part
   }
   if (++stall_count_[i] <= options_.collapse.stall_collisions) return;
   const ParticleStore& p = system_.particles;
+  const std::string partner = partner_code >= 0
+                                  ? "particle " + std::to_string(p.id[partner_code])
+                                  : "wall '" + system_.walls[-1 - partner_code].name + "'";
   std::ostringstream out;
   out << "inelastic collapse at t = " << t << " s: particle " << p.id[i] << " (species "
       << system_.species[p.species[i]].name << ", at " << position(i).transpose() << " m) took part in "
@@ -111,6 +126,7 @@ void Simulator::book_collision(std::int32_t i, double t, const std::string& part
          "one are elastic), or make slow impacts elastic (collapse elastic_below_speed), or raise "
          "the restitution coefficient.";
   std::vector<std::uint64_t> ids{p.id[i]};
+  if (partner_code >= 0) ids.push_back(p.id[partner_code]);
   throw InelasticCollapse(out.str(), ids);
 }
 

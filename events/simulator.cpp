@@ -54,11 +54,12 @@ Simulator::Simulator(System system, SimulatorOptions options)
   ParticleStore& p = system_.particles;
   const std::size_t n = p.size();
   if (n > 0) p.permute(spatial_order(system_));
-  grid_ = HierarchicalGrid(system_.domain, p.radius, options_.grid_level_ratio);
+  grid_ = HierarchicalGrid(system_.domain, p.radius, options_.grid_level_ratio, options_.grid_subdivision);
   for (std::size_t i = 0; i < n; ++i) grid_.insert(static_cast<std::int32_t>(i), p.position[i]);
   statistics_.resize(system_.species.size(), system_.walls.size());
   has_gravity_ = system_.flight.has_gravity();
   events_.assign(n, Event{});
+  crossings_.assign(n, Event{});
   end_slot_ = n;
   calendar_.resize(n + 1);
   stall_window_start_.assign(n, -kNever);
@@ -74,6 +75,8 @@ Simulator::Simulator(System system, SimulatorOptions options)
     stall_window_ = speed > 0.0 ? 1e-9 * d_min / speed : 0.0;
   }
   time_ = last_particle_event_ = n > 0 ? *std::max_element(p.clock.begin(), p.clock.end()) : 0.0;
+  hot_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) refresh_hot(static_cast<std::int32_t>(i));
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
 
@@ -84,13 +87,16 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   if (state.cells.size() != n || state.events.size() != n || state.stall_count.size() != n ||
       state.stall_window_start.size() != n)
     throw std::invalid_argument("saved state: the arrays do not all hold one entry per particle");
-  grid_ = HierarchicalGrid(system_.domain, system_.particles.radius, options_.grid_level_ratio);
+  grid_ = HierarchicalGrid(system_.domain, system_.particles.radius, options_.grid_level_ratio,
+                           options_.grid_subdivision);
   for (std::size_t i = 0; i < n; ++i) grid_.insert_at(static_cast<std::int32_t>(i), state.cells[i]);
   has_gravity_ = system_.flight.has_gravity();
   events_ = std::move(state.events);
+  crossings_ = std::move(state.crossings);
+  if (crossings_.size() != n) throw std::invalid_argument("saved state: crossings missing");
   end_slot_ = n;
   calendar_.resize(n + 1);
-  for (std::size_t i = 0; i < n; ++i) calendar_.set(i, events_[i].time);
+  for (std::size_t i = 0; i < n; ++i) calendar_.set(i, next_event(i).time);
   time_ = state.time;
   last_particle_event_ = state.last_particle_event;
   statistics_ = std::move(state.statistics);
@@ -98,6 +104,8 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   stall_count_ = std::move(state.stall_count);
   stall_window_ = state.stall_window;
   restored_action_times_ = std::move(state.action_times);
+  hot_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) refresh_hot(static_cast<std::int32_t>(i));
 }
 
 EngineState Simulator::state() const {
@@ -107,6 +115,7 @@ EngineState Simulator::state() const {
   s.cells.resize(n);
   for (std::size_t i = 0; i < n; ++i) s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
   s.events = events_;
+  s.crossings = crossings_;
   s.time = time_;
   s.last_particle_event = last_particle_event_;
   s.statistics = statistics_;
@@ -186,7 +195,7 @@ Energies Simulator::energies() const {
 }
 
 void Simulator::process_particle_event(std::int32_t i) {
-  const Event event = events_[i];
+  const Event event = next_event(i);
   switch (event.kind) {
     case EventKind::Pair:
       if (system_.particles.event_counter[event.partner] != event.partner_counter) {

@@ -5,6 +5,7 @@
 //   carom_bench --n 100000 --phi 0.3 --ratio 0.2 --fines 0.5
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -17,20 +18,23 @@ using namespace carom;
 int main(int argc, char** argv) {
   CLI::App app{"carom_bench: event-driven hard-sphere fluid benchmark"};
   GranularGasSpec spec;
-  double equilibrate = 5.0, measure = 20.0, level_ratio = 0.5;
+  double equilibrate = 5.0, measure = 20.0, level_ratio = -1.0;
   app.add_option("--n", spec.count, "number of particles (monodisperse: rounded to 4 k^3)");
   app.add_option("--phi", spec.volume_fraction, "solid volume fraction")->check(CLI::Range(0.001, 0.7));
   app.add_option("--ratio", spec.fines_diameter_ratio, "fines / large diameter ratio (1: monodisperse)");
   app.add_option("--fines", spec.fines_number_fraction, "number fraction of fines");
   app.add_option("--equilibrate", equilibrate, "collisions per particle before measuring");
   app.add_option("--measure", measure, "collisions per particle measured");
-  app.add_option("--grid-ratio", level_ratio, "size ratio that starts a new grid level (0: one grid)");
+  app.add_option("--grid-ratio", level_ratio, "grid levels: < 0 cheapest (default), 0 one grid, > 0 size ratio that starts a level");
   app.add_option("--seed", spec.seed, "random seed");
+  int subdivision = 1;
+  app.add_option("--subdivision", subdivision, "grid cells per diameter (1..3)");
   CLI11_PARSE(app, argc, argv);
 
   const System system = make_granular_gas(spec);
   SimulatorOptions options;
   options.grid_level_ratio = level_ratio;
+  options.grid_subdivision = subdivision;
   options.check_invariants = false;
   Simulator sim(system, options);
   const std::size_t n = sim.particle_count();
@@ -53,9 +57,16 @@ int main(int argc, char** argv) {
 
   const RunStatistics before = sim.statistics();
   const double t0 = sim.time();
+  auto cpu_seconds = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+  };
+  const double cpu0 = cpu_seconds();
   const auto wall0 = std::chrono::steady_clock::now();
   run_collisions(measure);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const double cpu = cpu_seconds() - cpu0;
   const RunStatistics& after = sim.statistics();
   const double dt = sim.time() - t0;
   const std::uint64_t collisions = after.pair_events - before.pair_events;
@@ -74,6 +85,7 @@ int main(int argc, char** argv) {
     std::printf("enskog_collision_rate=%.5f\n",
                 4 * number_density * d * d * g0 * std::sqrt(std::numbers::pi * temperature / mass));
   }
+  std::printf("cpu_seconds=%.3f collisions_per_cpu_second=%.0f\n", cpu, collisions / cpu);
   std::printf("events=%llu invalid_events=%llu cell_crossings=%llu wall_seconds=%.3f\n",
               static_cast<unsigned long long>(after.events - before.events),
               static_cast<unsigned long long>(after.invalid_events - before.invalid_events),

@@ -1,10 +1,17 @@
 #pragma once
-/// The future-event calendar: a Boost.Heap mutable heap with one entry per slot.
+/// The future-event calendar: a Boost.Heap mutable heap over small blocks of slots.
 ///
 /// Slots 0..N-1 are particles (each holds its earliest predicted event); higher slots are
 /// global events (end of run, samples, checkpoints). Ties in time are broken by the slot
 /// number, so the order of events is a pure function of the predicted times: reproducible,
 /// and the same after a checkpoint is restored.
+///
+/// Slots are grouped in blocks of kBlock consecutive slots. Each block keeps its earliest slot
+/// (found by a scan of kBlock doubles, two cache lines), and the heap orders the blocks. The
+/// heap is then kBlock times smaller, so it stays in cache: with one heap entry per slot, most
+/// heap comparisons missed the L1 cache (cachegrind), and an update now often does not touch
+/// the heap at all (when the block's earliest slot does not change).
+#include <algorithm>
 #include <boost/heap/d_ary_heap.hpp>
 #include <cstdint>
 #include <vector>
@@ -15,26 +22,45 @@ namespace carom {
 
 class Calendar {
  public:
+  /// Slots per block.
+  static constexpr std::size_t kBlock = 16;
+
   /// A calendar with `slots` entries, all at time kNever.
   explicit Calendar(std::size_t slots = 0) { resize(slots); }
 
   /// Grows to `slots` entries; new ones start at kNever.
   void resize(std::size_t slots) {
-    handles_.reserve(slots);
-    while (handles_.size() < slots) {
-      const auto slot = static_cast<std::uint32_t>(handles_.size());
-      handles_.push_back(heap_.push(Entry{kNever, slot}));
+    slots_ = std::max(slots_, slots);
+    const std::size_t blocks = (slots_ + kBlock - 1) / kBlock;
+    times_.resize(blocks * kBlock, kNever);
+    while (handles_.size() < blocks) {
+      const auto block = static_cast<std::uint32_t>(handles_.size());
+      handles_.push_back(heap_.push(Entry{kNever, block * static_cast<std::uint32_t>(kBlock)}));
     }
   }
+
   /// Sets the time of `slot`'s entry (earlier or later).
-  void set(std::size_t slot, double time) { heap_.update(handles_[slot], Entry{time, static_cast<std::uint32_t>(slot)}); }
+  void set(std::size_t slot, double time) {
+    times_[slot] = time;
+    const std::size_t block = slot / kBlock;
+    const Entry current = *handles_[block];
+    Entry best = current;
+    if (time < current.time || (time == current.time && slot < current.slot)) {
+      best = Entry{time, static_cast<std::uint32_t>(slot)};
+    } else if (slot == current.slot) {
+      best = earliest_in(block);  // the block's earliest entry got later: look again
+    } else {
+      return;  // a later entry than the block's earliest: nothing moves
+    }
+    heap_.update(handles_[block], best);
+  }
   /// The slot whose entry comes first.
   std::size_t top_slot() const { return heap_.top().slot; }
   /// The earliest time in the calendar, s.
   double top_time() const { return heap_.top().time; }
   /// The time now held by `slot`, s.
-  double time_of(std::size_t slot) const { return (*handles_[slot]).time; }
-  std::size_t size() const { return handles_.size(); }
+  double time_of(std::size_t slot) const { return times_[slot]; }
+  std::size_t size() const { return slots_; }
 
  private:
   struct Entry {
@@ -47,10 +73,19 @@ class Calendar {
       return a.time > b.time || (a.time == b.time && a.slot > b.slot);
     }
   };
-  using Heap = boost::heap::d_ary_heap<Entry, boost::heap::arity<8>, boost::heap::mutable_<true>,
+  Entry earliest_in(std::size_t block) const {
+    const std::size_t first = block * kBlock;
+    std::size_t best = first;
+    for (std::size_t s = first + 1; s < first + kBlock; ++s)
+      if (times_[s] < times_[best]) best = s;
+    return Entry{times_[best], static_cast<std::uint32_t>(best)};
+  }
+  using Heap = boost::heap::d_ary_heap<Entry, boost::heap::arity<4>, boost::heap::mutable_<true>,
                                        boost::heap::compare<Later>>;
   Heap heap_;
-  std::vector<Heap::handle_type> handles_;
+  std::vector<Heap::handle_type> handles_;  ///< One per block.
+  std::vector<double> times_;               ///< Per slot (padded to whole blocks with kNever).
+  std::size_t slots_ = 0;
 };
 
 }  // namespace carom

@@ -102,10 +102,13 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
     for (int k = 0; k < 3; ++k) {
       int n = static_cast<int>(std::floor(length[k] * subdivision / d));
       n = std::clamp(n, 1, 1 << 20);
-      if (domain.periodic[k] && n < 2 * subdivision + 1)
+      // A periodic axis needs 4 cells (2m + 2): with 3, the two cells at the ends are
+      // neighbours both directly and through the boundary, and the nearest image at the time
+      // of a prediction need not be the one that touches.
+      if (domain.periodic[k] && n < 2 * subdivision + 2)
         throw std::invalid_argument(
             "periodic axis " + std::string(1, "xyz"[k]) + " is " + std::to_string(length[k]) +
-            " m long; it must be at least 3 particle diameters (" + std::to_string(3 * d) + " m)");
+            " m long; it must be at least 4 particle diameters (" + std::to_string(4 * d) + " m)");
       grid.cells[k] = n;
       grid.cell_size[k] = length[k] / n;
     }

@@ -17,7 +17,8 @@ struct Domain {
   double volume() const { return length().prod(); }
 
   /// Maps a separation vector to its nearest periodic image (unchanged on walled axes).
-  /// Valid for separations shorter than 1.5 box lengths, as between stored particle states.
+  /// Valid for separations shorter than 1.5 box lengths. Stored particle states never lie
+  /// outside their grid cell (a crossing brings the state up to date), so this holds.
   void minimum_image(Vec3& separation) const {
     for (int k = 0; k < 3; ++k) {
       if (!periodic[k]) continue;

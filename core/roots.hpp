@@ -22,6 +22,14 @@ inline double first_upward_crossing(double A, double B, double C) {
     // q keeps one sign; it is "outside" (and so crosses now) only if it is positive.
     return (A > 0.0 && C > 0.0) ? 0.0 : kNever;
   }
+  if (discriminant == 0.0) {
+    // q only touches zero at its vertex: for A < 0 it never goes above (a tangent, no
+    // crossing: e.g. a particle at rest exactly on a cell face with gravity pulling it back);
+    // for A > 0 it leaves zero upward at the vertex, or now if the vertex is past.
+    if (A < 0.0) return kNever;
+    const double vertex = -B / (2.0 * A);
+    return vertex > 0.0 ? vertex : 0.0;
+  }
   const double root_disc = std::sqrt(discriminant);
   double s;
   if (B <= 0.0) {

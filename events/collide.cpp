@@ -91,9 +91,13 @@ void Simulator::collide_wall(std::int32_t i, std::int32_t w, double t) {
 
 void Simulator::cross_cell(std::int32_t i, int face) {
   const int axis = face / 2, direction = (face % 2) ? +1 : -1;
+  // Bring the stored state to the crossing: the next crossing is then predicted from "now"
+  // (a particle that fell back through a face is not mistaken for one still rising), and
+  // stored states never lag more than one cell behind (so one periodic image shift suffices).
+  advance(i, time_);
   const Vec3 shift = grid_.cross(i, axis, direction);
   system_.particles.position[i] += shift;  // a periodic wrap moves the stored state by one box
-  hot_[i].position = system_.particles.position[i];
+  refresh_hot(i);
   ++statistics_.cell_crossings;
   // Same trajectory: partners' predictions with i stay valid (no counter bump), and so does
   // i's own next collision; only the cells that just came into reach need a look.

@@ -136,19 +136,26 @@ void Simulator::add_periodic_action(std::string name, double first_time, double 
   calendar_.set(end_slot_ + actions_.size(), first_time);
 }
 
-void Simulator::run_until(double t_end) {
+bool Simulator::run_until(double t_end) {
   if (!(t_end >= time_))
     throw std::invalid_argument("run_until: the end time " + std::to_string(t_end) +
                                 " s is before the current time " + std::to_string(time_) + " s");
   calendar_.set(end_slot_, t_end);
-  for (;;) {
+  for (std::uint32_t countdown = 4096;; --countdown) {
+    if (countdown == 0) {
+      countdown = 4096;
+      if (stop_flag_ != nullptr && *stop_flag_ != 0) {
+        calendar_.set(end_slot_, kNever);
+        return false;
+      }
+    }
     const std::size_t slot = calendar_.top_slot();
     if (slot < end_slot_) {
       process_particle_event(static_cast<std::int32_t>(slot));
     } else if (slot == end_slot_) {
       calendar_.set(end_slot_, kNever);
       time_ = t_end;
-      return;
+      return true;
     } else {
       PeriodicAction& action = actions_[slot - end_slot_ - 1];
       time_ = action.next_time;
@@ -196,6 +203,21 @@ Energies Simulator::energies() const {
 
 void Simulator::process_particle_event(std::int32_t i) {
   const Event event = next_event(i);
+  // Stall detector, second half: events that never move time on (the first half, in
+  // book_collision, counts one particle's collisions in a short window).
+  if (event.time > last_particle_event_) {
+    events_without_progress_ = 0;
+  } else if (++events_without_progress_ > 1000000 + 100 * events_.size()) {
+    const ParticleStore& p = system_.particles;
+    std::ostringstream out;
+    out << "the run is stalled at t = " << event.time << " s: " << events_without_progress_
+        << " events without simulated time moving on, the last for particle " << p.id[i]
+        << " (species " << system_.species[p.species[i]].name << ", at " << position(i).transpose()
+        << " m). This is inelastic collapse or particles at rest in lasting contact. Remedy: turn "
+           "on the TC model (collapse contact_time, e.g. 1e-5 s), or make slow impacts elastic "
+           "(collapse elastic_below_speed).";
+    throw InelasticCollapse(out.str(), {p.id[i]});
+  }
   switch (event.kind) {
     case EventKind::Pair:
       if (system_.particles.event_counter[event.partner] != event.partner_counter) {

@@ -1,5 +1,6 @@
 #pragma once
 /// The event loop: exact hard-sphere dynamics from event to event.
+#include <csignal>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -82,9 +83,14 @@ class Simulator {
   /// A copy of the complete dynamic state (see EngineState).
   EngineState state() const;
 
-  /// Processes every event up to time t_end (s) and stops there.
+  /// Processes every event up to time t_end (s) and stops there. Returns true when it got
+  /// there, false when the stop flag (see set_stop_flag) was raised first: then the run stands
+  /// at its last processed event, in a consistent state that can be checkpointed and resumed.
   /// Throws InelasticCollapse when the stall detector fires.
-  void run_until(double t_end);
+  bool run_until(double t_end);
+
+  /// A flag (set by a signal handler, say) that run_until checks every few thousand events.
+  void set_stop_flag(const volatile std::sig_atomic_t* flag) { stop_flag_ = flag; }
 
   /// Registers an action to run at first_time and then every interval seconds (a global event).
   void add_periodic_action(std::string name, double first_time, double interval,
@@ -174,6 +180,8 @@ class Simulator {
   std::vector<std::uint32_t> stall_count_;     ///< Per particle: collisions in that window.
   double stall_window_ = 0;                    ///< s.
   std::vector<std::pair<std::string, double>> restored_action_times_;
+  std::uint64_t events_without_progress_ = 0;  ///< Consecutive events at one time.
+  const volatile std::sig_atomic_t* stop_flag_ = nullptr;
 };
 
 }  // namespace carom

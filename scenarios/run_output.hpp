@@ -1,19 +1,35 @@
 #pragma once
 /// The HDF5 file of one run (plus its XDMF sidecar) and checkpoints.
 ///
-/// Layout of a run file (all SI):
-///   /               attributes: carom_version, seed, scene_name
-///   /scene          string dataset: the scene file text as run (after --set overrides)
-///   /species        compound or parallel datasets: name, diameter, density
-///   /walls          names of the walls (collision counters refer to them by index)
-///   /snapshots/NNNNNN   group per snapshot, attribute time; datasets position (N x 3),
-///                   velocity (N x 3), spin (N x 3), radius (N), species (N), id (N)
-///   /timeseries/    extendible 1-D datasets, one row per sample: time, kinetic_translational,
-///                   kinetic_rotational, potential, dissipated, events, collisions,
-///                   event_rate, pressure_tensor (rows x 9), pair_collisions (rows x S*S),
-///                   wall_collisions (rows x S*W)
-/// The XDMF sidecar (same name, .xmf) lists the snapshots as a temporal collection of
-/// polyvertex grids with radius, velocity, spin, species and id as point data.
+/// Layout of a run file (all SI; tensors are 9 values row by row: xx xy xz yx ... zz):
+///   /                    attributes: kind = "carom run", carom_version, seed, scene_name
+///   /scene               string: the scene file text as run (after --set overrides)
+///   /domain/             lower (3), upper (3), periodic (3, 0/1), gravity (3); attribute volume
+///   /species/            name, diameter, density, mass, count (S each; count at creation)
+///   /walls/name          names of the walls (W; collision counters refer to them by index)
+///   /snapshots/NNNNNN/   one group per snapshot, attribute time (s), rows in id order:
+///                        position, velocity, spin (N x 3), radius (N), species (N, int32),
+///                        id (N, int64)
+///   /timeseries/         extendible datasets, one row per sample:
+///     time; kinetic_translational, kinetic_rotational, potential, dissipated, total_energy (J);
+///     events, collisions (uint64, cumulative); event_rate, collision_rate (1/s over the
+///     interval since the previous sample); virial (x9, cumulative sum r_ij (x) J_i, J s);
+///     kinetic_stress (x9, sum m v v / V at the sample, Pa); pressure_tensor (x9, Pa: the
+///     kinetic stress averaged over the interval by the trapezoidal rule plus the virial booked
+///     in the interval / (V dt)); pressure (trace / 3, Pa); pair_collisions (x S*S, uint64,
+///     cumulative, symmetric); and when there are walls wall_collisions (x S*W, uint64,
+///     cumulative) and wall_impulse (x W*3, cumulative, N s). V is the box volume.
+/// The XDMF sidecar (same name, .xmf instead of .h5) lists the snapshots as a temporal
+/// collection of Polyvertex grids with radius, velocity, spin, species and id as point data;
+/// it is rewritten (atomically) after every snapshot.
+///
+/// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
+/// scene_name; /scene; /state (attributes time, last_particle_event, stall_window) with
+/// particles/ (every ParticleStore array, in the simulator's internal order), cells (N x 3),
+/// events/ and crossings/ (each: time, partner, partner_counter, kind), statistics/ (counters as
+/// attributes; pair_collisions, wall_collisions, wall_impulse (W x 3), virial (3 x 3)),
+/// stall_window_start, stall_count, actions/ (name, next_time). Doubles are stored as native
+/// doubles: bit for bit.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -24,9 +40,9 @@ namespace carom {
 
 /// What identifies a run in its outputs.
 struct RunInfo {
-  std::string scene_text;   ///< The scene file text (after overrides).
-  std::string scene_name;   ///< [meta] name.
-  std::uint64_t seed = 0;   ///< Random seed.
+  std::string scene_text;  ///< The scene file text (after overrides).
+  std::string scene_name;  ///< [meta] name.
+  std::uint64_t seed = 0;  ///< Random seed.
 };
 
 /// Writes one run's HDF5 file. Opening creates (truncates) the file; every write is flushed so
@@ -34,7 +50,9 @@ struct RunInfo {
 class RunFile {
  public:
   RunFile(const std::string& path, const RunInfo& info, const System& system);
-  /// Reopens an existing run file to append (used by `carom resume`).
+  /// Reopens an existing run file to append (used by `carom resume`). When the run resumes from
+  /// a checkpoint older than the file's last outputs, the first snapshot / sample written drops
+  /// those at or after its time, so the file ends as the uninterrupted run's would.
   static std::unique_ptr<RunFile> append(const std::string& path);
   ~RunFile();
   RunFile(const RunFile&) = delete;
@@ -42,11 +60,13 @@ class RunFile {
 
   /// Adds a snapshot of every particle at sim.time() and rewrites the XDMF sidecar.
   void write_snapshot(const Simulator& sim);
-  /// Appends one row of every time series at sim.time().
+  /// Appends one row of every time series at sim.time(); rates and the pressure tensor are
+  /// averages over the interval since the previous row (since t = 0 for the first).
   void append_sample(const Simulator& sim);
   const std::string& path() const;
 
  private:
+  RunFile();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,0 +1,243 @@
+#!/usr/bin/python3
+"""Figures of one carom run file.
+
+    /usr/bin/python3 scenarios/plot.py RUN.h5 [--out DIR] [--snapshot K] [--axes xy] [--slab W]
+
+Writes, as 150 dpi PNGs named after the run file:
+  RUN_energies.png         kinetic (translational, rotational), potential, dissipated and total
+                           energy against time (/timeseries);
+  RUN_collision_rates.png  pair collisions per unit time for every species pair, measured over
+                           each sample interval, with the Enskog prediction when the run is a
+                           homogeneous gas (every axis periodic, no gravity, no walls);
+  RUN_snapshot.png         one snapshot (the last by default) as circles of the particles' radii
+                           in a slab around the box's mid-plane, coloured by species.
+
+Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
+Enskog rate of s-t collisions in a mixture at granular temperature T (k = 1):
+    omega_st = 4 n_t sigma_st^2 g_st sqrt(pi T / (2 mu_st)),  mu_st = m_s m_t / (m_s + m_t),
+    rate_st = N_s omega_st (s != t),  rate_ss = N_s omega_ss / 2,
+with g_st the Boublik-Mansoori-Carnahan-Starling-Leland contact value; for one species this is
+omega = 4 n sigma^2 g0 sqrt(pi T / m) with the Carnahan-Starling g0 = (1 - phi/2) / (1 - phi)^3.
+T = 2 K / (3 (N - 1)) from the translational kinetic energy K (total momentum is zero).
+"""
+import argparse
+import os
+import sys
+
+# A run still being written holds its file open; HDF5 1.10's file locks would refuse to open it
+# for reading. The writer flushes after every write, so what is read is complete.
+os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
+import h5py  # noqa: E402
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import EllipseCollection  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+
+DPI = 150
+plt.rcParams.update({
+    "font.size": 10,
+    "axes.labelsize": 10,
+    "legend.fontsize": 9,
+    "legend.frameon": False,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+})
+COLOURS = plt.get_cmap("tab10").colors
+
+
+def text(value):
+    """h5py gives fixed-length strings as bytes."""
+    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
+
+
+def species_names(run):
+    return [text(name) for name in run["species/name"][()]]
+
+
+def contact_values(diameter, number_density):
+    """BMCSL contact values g_st of a hard-sphere mixture, and the volume fraction."""
+    xi2 = np.pi / 6 * np.sum(number_density * diameter**2)
+    phi = np.pi / 6 * np.sum(number_density * diameter**3)
+    ratio = np.outer(diameter, diameter) / np.add.outer(diameter, diameter)
+    g = 1 / (1 - phi) + 3 * xi2 * ratio / (1 - phi)**2 + 2 * xi2**2 * ratio**2 / (1 - phi)**3
+    return g, phi
+
+
+def is_homogeneous_gas(run):
+    domain = run["domain"]
+    return (bool(np.all(domain["periodic"][()] != 0)) and not np.any(domain["gravity"][()])
+            and len(run["walls/name"]) == 0)
+
+
+def enskog_pair_rates(run, temperature):
+    """Enskog s-t collision rates (1/s) for each temperature: array (len(T), S, S)."""
+    diameter = run["species/diameter"][()]
+    mass = run["species/mass"][()]
+    count = run["species/count"][()].astype(float)
+    volume = run["domain"].attrs["volume"]
+    density = count / volume
+    g, _ = contact_values(diameter, density)
+    sigma = 0.5 * np.add.outer(diameter, diameter)
+    mu = np.outer(mass, mass) / np.add.outer(mass, mass)
+    # omega[s, t]: collisions per unit time of one s particle with t particles.
+    omega_per_sqrt_t = 4 * density[None, :] * sigma**2 * g * np.sqrt(np.pi / (2 * mu))
+    rate = count[:, None] * omega_per_sqrt_t
+    rate[np.diag_indices_from(rate)] *= 0.5
+    return np.sqrt(np.maximum(temperature, 0))[:, None, None] * rate[None, :, :]
+
+
+def plot_energies(run, path):
+    series = run["timeseries"]
+    t = series["time"][()]
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    if len(t) == 0:
+        ax.text(0.5, 0.5, "no samples", ha="center", transform=ax.transAxes)
+    else:
+        curves = [("kinetic_translational", "kinetic, translational", "-"),
+                  ("kinetic_rotational", "kinetic, rotational", "-"),
+                  ("potential", "potential", "-"),
+                  ("dissipated", "dissipated", "--"),
+                  ("total_energy", "total", ":")]
+        scale = np.max(np.abs(series["total_energy"][()])) or 1.0
+        for k, (name, label, style) in enumerate(curves):
+            values = series[name][()]
+            if name in ("kinetic_rotational", "potential") and \
+                    np.max(np.abs(values)) < 1e-12 * scale:
+                continue  # zero up to round-off (smooth spheres, no gravity): only clutter
+            ax.plot(t, values, style, color=COLOURS[k], lw=1.6 if name == "total_energy" else 1.2,
+                    label=label)
+        ax.legend(loc="best")
+    ax.set_xlabel("time $t$ (s)")
+    ax.set_ylabel("energy (J)")
+    ax.set_title("Energies")
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
+def plot_collision_rates(run, path):
+    series = run["timeseries"]
+    t = series["time"][()]
+    names = species_names(run)
+    s_count = len(names)
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    if len(t) < 2:
+        ax.text(0.5, 0.5, "fewer than two samples", ha="center", transform=ax.transAxes)
+    else:
+        counts = series["pair_collisions"][()].reshape(len(t), s_count, s_count).astype(float)
+        dt = np.diff(t)
+        keep = dt > 0
+        middle = 0.5 * (t[1:] + t[:-1])[keep]
+        measured = (np.diff(counts, axis=0)[keep] / dt[keep, None, None])
+        theory = None
+        if is_homogeneous_gas(run):
+            kinetic = series["kinetic_translational"][()]
+            n = float(np.sum(run["species/count"][()]))
+            temperature = 2 * kinetic / (3 * max(n - 1, 1))
+            # Mean temperature over each interval (exact for a linear change).
+            theory = enskog_pair_rates(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
+        k = 0
+        for s in range(s_count):
+            for u in range(s, s_count):
+                label = names[s] if s_count == 1 else f"{names[s]}–{names[u]}"
+                colour = COLOURS[k % len(COLOURS)]
+                ax.plot(middle, measured[:, s, u], "o", ms=3, color=colour, alpha=0.8,
+                        label=f"{label}, measured")
+                if theory is not None:
+                    ax.plot(middle, theory[:, s, u], "-", lw=1.4, color=colour,
+                            label=f"{label}, Enskog")
+                k += 1
+        ax.set_ylim(bottom=0)
+        ax.legend(loc="best")
+    ax.set_xlabel("time $t$ (s)")
+    ax.set_ylabel("pair collisions per unit time (1/s)")
+    ax.set_title("Collision rates per species pair")
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
+def plot_snapshot(run, path, index, axes, slab):
+    groups = sorted(run["snapshots"].keys())
+    lower, upper = run["domain/lower"][()], run["domain/upper"][()]
+    a, b = ("xyz".index(axes[0]), "xyz".index(axes[1]))
+    aspect = (upper[b] - lower[b]) / (upper[a] - lower[a])
+    height = 5.2 if aspect >= 1 else max(2.5, 4.0 * aspect + 1.2)
+    width = min(max(4.0 / max(aspect, 1) + 1.8, 3.5), 9.0) if aspect >= 1 else 6.4
+    fig, ax = plt.subplots(figsize=(width, height))
+    if not groups:
+        ax.text(0.5, 0.5, "no snapshots", ha="center", transform=ax.transAxes)
+        fig.savefig(path, dpi=DPI)
+        plt.close(fig)
+        return
+    snapshot = run["snapshots"][groups[index]]
+    position = snapshot["position"][()]
+    radius = snapshot["radius"][()]
+    species = snapshot["species"][()]
+    names = species_names(run)
+    depth_axis = 3 - a - b
+    middle = 0.5 * (lower[depth_axis] + upper[depth_axis])
+    if slab is None:
+        slab = 4 * radius.max() if len(radius) else 0.0
+    chosen = (np.abs(position[:, depth_axis] - middle) <= 0.5 * slab) if slab > 0 else \
+        np.ones(len(radius), bool)
+    order = np.argsort(position[chosen, depth_axis])  # nearer particles drawn last
+    p, r, s = position[chosen][order], radius[chosen][order], species[chosen][order]
+    colours = np.array([COLOURS[k % len(COLOURS)] for k in s]).reshape(-1, 3)
+    ax.add_collection(EllipseCollection(2 * r, 2 * r, np.zeros_like(r), units="xy",
+                                        offsets=p[:, [a, b]], transOffset=ax.transData,
+                                        facecolors=colours, edgecolors="black", linewidths=0.3))
+    ax.add_patch(plt.Rectangle((lower[a], lower[b]), upper[a] - lower[a], upper[b] - lower[b],
+                               fill=False, lw=0.8, color="0.3"))
+    margin = 0.03 * max(upper[a] - lower[a], upper[b] - lower[b])
+    ax.set_xlim(lower[a] - margin, upper[a] + margin)
+    ax.set_ylim(lower[b] - margin, upper[b] + margin)
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"${axes[0]}$ (m)")
+    ax.set_ylabel(f"${axes[1]}$ (m)")
+    handles = [Line2D([], [], marker="o", ls="", ms=8, markerfacecolor=COLOURS[k % len(COLOURS)],
+                      markeredgecolor="black", label=name) for k, name in enumerate(names)]
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    what = (f"slab $|{'xyz'[depth_axis]} - {middle:.3g}| \\leq {0.5 * slab:.3g}$ m"
+            if slab > 0 else "all particles")
+    ax.set_title(f"$t$ = {snapshot.attrs['time']:.4g} s, {len(r)} of {len(radius)} particles "
+                 f"({what})", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("run", help="the run's HDF5 file")
+    parser.add_argument("--out", help="directory for the PNGs (default: beside the run file)")
+    parser.add_argument("--snapshot", type=int, default=-1, help="snapshot index (default: last)")
+    parser.add_argument("--axes", default="xy", choices=["xy", "xz", "yz", "yx", "zx", "zy"],
+                        help="projection plane of the snapshot picture (default xy)")
+    parser.add_argument("--slab", type=float, default=None,
+                        help="thickness (m) of the slab drawn around the mid-plane; 0 draws all "
+                             "particles (default: 2 largest diameters)")
+    args = parser.parse_args(argv)
+
+    out = args.out or os.path.dirname(os.path.abspath(args.run))
+    os.makedirs(out, exist_ok=True)
+    stem = os.path.splitext(os.path.basename(args.run))[0]
+    with h5py.File(args.run, "r") as run:
+        if text(run.attrs.get("kind", b"")) != "carom run":
+            sys.exit(f"{args.run}: not a carom run file")
+        written = []
+        for name, draw in [("energies", lambda p: plot_energies(run, p)),
+                           ("collision_rates", lambda p: plot_collision_rates(run, p)),
+                           ("snapshot", lambda p: plot_snapshot(run, p, args.snapshot, args.axes,
+                                                                args.slab))]:
+            path = os.path.join(out, f"{stem}_{name}.png")
+            draw(path)
+            written.append(path)
+    print("\n".join(written))
+
+
+if __name__ == "__main__":
+    main()

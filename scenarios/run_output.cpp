@@ -1,0 +1,629 @@
+#include "run_output.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include "carom/version.hpp"
+#include "core/hdf5.hpp"
+
+namespace carom {
+
+namespace {
+
+constexpr const char* kRunKind = "carom run";
+constexpr const char* kCheckpointKind = "carom checkpoint";
+
+std::vector<double> flatten(const std::vector<Vec3>& vectors) {
+  std::vector<double> values;
+  values.reserve(3 * vectors.size());
+  for (const Vec3& v : vectors) values.insert(values.end(), {v.x(), v.y(), v.z()});
+  return values;
+}
+
+std::vector<Vec3> unflatten(const std::vector<double>& values) {
+  std::vector<Vec3> vectors(values.size() / 3);
+  for (std::size_t i = 0; i < vectors.size(); ++i)
+    vectors[i] = Vec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
+  return vectors;
+}
+
+/// A 3x3 tensor as 9 values, row by row (xx, xy, xz, yx, ...).
+std::vector<double> row_major(const Eigen::Matrix3d& tensor) {
+  std::vector<double> values(9);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) values[3 * r + c] = tensor(r, c);
+  return values;
+}
+
+Eigen::Matrix3d from_row_major(const std::vector<double>& values) {
+  Eigen::Matrix3d tensor;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) tensor(r, c) = values[3 * r + c];
+  return tensor;
+}
+
+/// "run.h5" -> "run.xmf" (any other name gets ".xmf" appended).
+std::string xdmf_path_of(const std::string& path) {
+  for (const char* extension : {".h5", ".hdf5"}) {
+    const std::string ext = extension;
+    if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0)
+      return path.substr(0, path.size() - ext.size()) + ".xmf";
+  }
+  return path + ".xmf";
+}
+
+std::string base_name(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string snapshot_name(std::size_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06zu", index);
+  return name;
+}
+
+/// Forces a file's (or a directory's) contents to disk; best effort.
+void sync_to_disk(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+/// Replaces `path` by `temporary` in one step (POSIX rename is atomic on one file system).
+void replace_file(const std::string& temporary, const std::string& path) {
+  sync_to_disk(temporary);
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    throw std::runtime_error(path + ": cannot replace it by " + temporary + ": " +
+                             std::strerror(errno));
+  const std::size_t slash = path.find_last_of('/');
+  sync_to_disk(slash == std::string::npos ? "." : path.substr(0, slash + 1));
+}
+
+void write_info(const h5::File& file, const RunInfo& info, const char* kind) {
+  file.set_attribute("kind", kind);
+  file.set_attribute("carom_version", kVersion);
+  file.set_attribute("seed", info.seed);
+  file.set_attribute("scene_name", info.scene_name);
+  file.write_string("scene", info.scene_text);
+}
+
+RunInfo read_info(const h5::File& file, const char* kind) {
+  if (!file.has_attribute("kind") || file.attribute<std::string>("kind") != kind)
+    file.fail(std::string("is not a ") + kind + " file (root attribute 'kind' differs)");
+  RunInfo info;
+  info.seed = file.attribute<std::uint64_t>("seed");
+  info.scene_name = file.attribute<std::string>("scene_name");
+  info.scene_text = file.read_string("scene");
+  return info;
+}
+
+// ---- time series ------------------------------------------------------------------------------
+
+/// Columns of each time series (0: a 1-D series); uint64 series are listed separately.
+struct SeriesLayout {
+  std::vector<std::pair<std::string, hsize_t>> doubles;
+  std::vector<std::pair<std::string, hsize_t>> counters;
+};
+
+SeriesLayout series_layout(std::size_t species, std::size_t walls) {
+  SeriesLayout layout;
+  layout.doubles = {{"time", 0},
+                    {"kinetic_translational", 0},
+                    {"kinetic_rotational", 0},
+                    {"potential", 0},
+                    {"dissipated", 0},
+                    {"total_energy", 0},
+                    {"event_rate", 0},
+                    {"collision_rate", 0},
+                    {"virial", 9},
+                    {"kinetic_stress", 9},
+                    {"pressure_tensor", 9},
+                    {"pressure", 0}};
+  layout.counters = {{"events", 0}, {"collisions", 0}, {"pair_collisions", species * species}};
+  if (walls > 0) {
+    layout.counters.emplace_back("wall_collisions", species * walls);
+    layout.doubles.emplace_back("wall_impulse", walls * 3);
+  }
+  return layout;
+}
+
+/// sum_i m_i v_i v_i^T at the simulator's current time, J.
+Eigen::Matrix3d kinetic_tensor(const Simulator& sim) {
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  const ParticleStore& p = sim.system().particles;
+  for (std::size_t i = 0; i < sim.particle_count(); ++i) {
+    const Vec3 v = sim.velocity(i);
+    sum += p.mass[i] * v * v.transpose();
+  }
+  return sum;
+}
+
+}  // namespace
+
+// ---- RunFile ----------------------------------------------------------------------------------
+
+struct RunFile::Impl {
+  explicit Impl(h5::File opened) : file(std::move(opened)) {}
+
+  h5::File file;
+  std::string path;
+  std::size_t species_count = 0;
+  std::size_t wall_count = 0;
+  double volume = 0;  ///< Box volume, m^3 (the pressure tensor's normalisation).
+
+  struct SnapshotEntry {
+    std::string name;
+    double time;
+    std::size_t count;
+  };
+  std::vector<SnapshotEntry> snapshots;
+
+  // The previous sample, for the averages over the sample interval.
+  double previous_time = 0;
+  std::uint64_t previous_events = 0;
+  std::uint64_t previous_collisions = 0;
+  Eigen::Matrix3d previous_virial = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d previous_kinetic_stress = Eigen::Matrix3d::Zero();
+  bool has_previous = false;
+
+  void write_xdmf() const;
+  void recover_previous_sample();
+  void drop_samples_from(double time);
+  void drop_snapshots_from(double time);
+};
+
+RunFile::RunFile(const std::string& path, const RunInfo& info, const System& system)
+    : impl_(std::make_unique<Impl>(h5::File::create(path))) {
+  Impl& d = *impl_;
+  d.path = path;
+  d.species_count = system.species.size();
+  d.wall_count = system.walls.size();
+  d.volume = system.domain.volume();
+  write_info(d.file, info, kRunKind);
+
+  const h5::Group domain = d.file.create_group("domain");
+  domain.write<double>("lower",
+                       {system.domain.lower.x(), system.domain.lower.y(), system.domain.lower.z()});
+  domain.write<double>("upper",
+                       {system.domain.upper.x(), system.domain.upper.y(), system.domain.upper.z()});
+  domain.write<std::int32_t>("periodic", {system.domain.periodic[0], system.domain.periodic[1],
+                                          system.domain.periodic[2]});
+  domain.write<double>(
+      "gravity", {system.flight.gravity.x(), system.flight.gravity.y(), system.flight.gravity.z()});
+  domain.set_attribute("volume", d.volume);
+
+  const h5::Group species = d.file.create_group("species");
+  std::vector<std::string> names;
+  std::vector<double> diameter, density, mass;
+  std::vector<std::uint64_t> count(system.species.size(), 0);
+  for (const Species& s : system.species) {
+    names.push_back(s.name);
+    diameter.push_back(s.diameter);
+    density.push_back(s.density);
+    mass.push_back(s.mass());
+  }
+  for (std::uint32_t s : system.particles.species) ++count.at(s);
+  species.write_strings("name", names);
+  species.write("diameter", diameter);
+  species.write("density", density);
+  species.write("mass", mass);
+  species.write("count", count);
+
+  const h5::Group walls = d.file.create_group("walls");
+  std::vector<std::string> wall_names;
+  for (const Wall& w : system.walls) wall_names.push_back(w.name);
+  walls.write_strings("name", wall_names);
+
+  d.file.create_group("snapshots");
+  const h5::Group series = d.file.create_group("timeseries");
+  const SeriesLayout layout = series_layout(d.species_count, d.wall_count);
+  for (const auto& [name, columns] : layout.doubles)
+    series.create_extendible<double>(name, columns);
+  for (const auto& [name, columns] : layout.counters)
+    series.create_extendible<std::uint64_t>(name, columns);
+  d.file.flush();
+  d.write_xdmf();
+}
+
+std::unique_ptr<RunFile> RunFile::append(const std::string& path) {
+  std::unique_ptr<RunFile> run(new RunFile());
+  run->impl_ = std::make_unique<Impl>(h5::File::open(path, true));
+  Impl& d = *run->impl_;
+  read_info(d.file, kRunKind);
+  d.path = path;
+  d.species_count = d.file.open_group("species").open_dataset("diameter").size();
+  d.wall_count = d.file.open_group("walls").open_dataset("name").size();
+  d.volume = d.file.open_group("domain").attribute<double>("volume");
+  const h5::Group snapshots = d.file.open_group("snapshots");
+  for (const std::string& name : snapshots.children()) {
+    const h5::Group snapshot = snapshots.open_group(name);
+    d.snapshots.push_back(
+        {name, snapshot.attribute<double>("time"), snapshot.open_dataset("radius").size()});
+  }
+  d.recover_previous_sample();
+  return run;
+}
+
+RunFile::RunFile() = default;
+RunFile::~RunFile() = default;
+
+const std::string& RunFile::path() const {
+  return impl_->path;
+}
+
+void RunFile::Impl::recover_previous_sample() {
+  const h5::Group series = file.open_group("timeseries");
+  const std::vector<double> times = series.read<double>("time");
+  if (times.empty()) return;
+  const std::size_t last = times.size() - 1;
+  auto last_row = [&](const std::vector<double>& values) {
+    return std::vector<double>(values.end() - 9, values.end());
+  };
+  previous_time = times[last];
+  previous_events = series.read<std::uint64_t>("events")[last];
+  previous_collisions = series.read<std::uint64_t>("collisions")[last];
+  previous_virial = from_row_major(last_row(series.read<double>("virial")));
+  previous_kinetic_stress = from_row_major(last_row(series.read<double>("kinetic_stress")));
+  has_previous = true;
+}
+
+// A run resumed from a checkpoint older than its last outputs writes them again (bit for bit the
+// same, the run being deterministic): the rows and snapshots from then on are dropped first.
+void RunFile::Impl::drop_samples_from(double time) {
+  const h5::Group series = file.open_group("timeseries");
+  const std::vector<double> times = series.read<double>("time");
+  const auto keep =
+      static_cast<hsize_t>(std::lower_bound(times.begin(), times.end(), time) - times.begin());
+  for (const std::string& name : series.children()) series.open_dataset(name).truncate(keep);
+  has_previous = false;
+  previous_time = 0;
+  previous_events = previous_collisions = 0;
+  previous_virial = previous_kinetic_stress = Eigen::Matrix3d::Zero();
+  recover_previous_sample();
+}
+
+void RunFile::Impl::drop_snapshots_from(double time) {
+  const h5::Group group = file.open_group("snapshots");
+  while (!snapshots.empty() && snapshots.back().time >= time) {
+    group.remove(snapshots.back().name);
+    snapshots.pop_back();
+  }
+}
+
+void RunFile::write_snapshot(const Simulator& sim) {
+  Impl& d = *impl_;
+  if (!d.snapshots.empty() && d.snapshots.back().time >= sim.time())
+    d.drop_snapshots_from(sim.time());
+  const ParticleStore& p = sim.system().particles;
+  const std::size_t n = sim.particle_count();
+  // Rows in the order of the particle ids, so that row k is the same particle in every snapshot.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.id[a] < p.id[b]; });
+
+  std::vector<Vec3> position(n), velocity(n), spin(n);
+  std::vector<double> radius(n);
+  std::vector<std::int32_t> species(n);
+  std::vector<std::int64_t> id(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    position[k] = sim.position(i);
+    velocity[k] = sim.velocity(i);
+    spin[k] = sim.spin(i);
+    radius[k] = p.radius[i];
+    species[k] = static_cast<std::int32_t>(p.species[i]);
+    id[k] = static_cast<std::int64_t>(p.id[i]);
+  }
+  const std::string name = snapshot_name(d.snapshots.size());
+  const h5::Group snapshot = d.file.open_group("snapshots").create_group(name);
+  snapshot.set_attribute("time", sim.time());
+  snapshot.write("position", flatten(position), {n, 3});
+  snapshot.write("velocity", flatten(velocity), {n, 3});
+  snapshot.write("spin", flatten(spin), {n, 3});
+  snapshot.write("radius", radius);
+  snapshot.write("species", species);
+  snapshot.write("id", id);
+  d.snapshots.push_back({name, sim.time(), n});
+  d.file.flush();
+  d.write_xdmf();
+}
+
+void RunFile::append_sample(const Simulator& sim) {
+  Impl& d = *impl_;
+  const double time = sim.time();
+  if (d.has_previous && d.previous_time >= time) d.drop_samples_from(time);
+  const Energies energy = sim.energies();
+  const RunStatistics& stats = sim.statistics();
+  const Eigen::Matrix3d kinetic_stress = kinetic_tensor(sim) / d.volume;
+
+  // Averages over the interval since the previous sample: the collisional stress from the
+  // virial booked in it, the kinetic stress by the trapezoidal rule on its two ends.
+  const double interval = time - d.previous_time;
+  const Eigen::Matrix3d collisional_stress =
+      interval > 0.0 ? Eigen::Matrix3d((stats.virial - d.previous_virial) / (d.volume * interval))
+                     : Eigen::Matrix3d::Zero();
+  const Eigen::Matrix3d mean_kinetic_stress =
+      d.has_previous ? Eigen::Matrix3d(0.5 * (kinetic_stress + d.previous_kinetic_stress))
+                     : kinetic_stress;
+  const Eigen::Matrix3d pressure_tensor = mean_kinetic_stress + collisional_stress;
+  auto rate = [&](std::uint64_t now, std::uint64_t before) {
+    return interval > 0.0 ? static_cast<double>(now - before) / interval : 0.0;
+  };
+
+  const h5::Group series = d.file.open_group("timeseries");
+  auto put = [&](const char* name, const auto& values) {
+    series.open_dataset(name).append(values);
+  };
+  put("time", std::vector<double>{time});
+  put("kinetic_translational", std::vector<double>{energy.translational});
+  put("kinetic_rotational", std::vector<double>{energy.rotational});
+  put("potential", std::vector<double>{energy.potential});
+  put("dissipated", std::vector<double>{energy.dissipated});
+  put("total_energy", std::vector<double>{energy.total()});
+  put("event_rate", std::vector<double>{rate(stats.events, d.previous_events)});
+  put("collision_rate", std::vector<double>{rate(stats.collisions(), d.previous_collisions)});
+  put("virial", row_major(stats.virial));
+  put("kinetic_stress", row_major(kinetic_stress));
+  put("pressure_tensor", row_major(pressure_tensor));
+  put("pressure", std::vector<double>{pressure_tensor.trace() / 3.0});
+  put("events", std::vector<std::uint64_t>{stats.events});
+  put("collisions", std::vector<std::uint64_t>{stats.collisions()});
+  put("pair_collisions", stats.pair_collisions);
+  if (d.wall_count > 0) {
+    put("wall_collisions", stats.wall_collisions);
+    put("wall_impulse",
+        flatten(std::vector<Vec3>(stats.wall_impulse.begin(), stats.wall_impulse.end())));
+  }
+  d.file.flush();
+
+  d.previous_time = time;
+  d.previous_events = stats.events;
+  d.previous_collisions = stats.collisions();
+  d.previous_virial = stats.virial;
+  d.previous_kinetic_stress = kinetic_stress;
+  d.has_previous = true;
+}
+
+void RunFile::Impl::write_xdmf() const {
+  const std::string data_file = base_name(path);
+  std::ostringstream xml;
+  xml.precision(17);
+  xml << "<?xml version=\"1.0\" ?>\n"
+      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const SnapshotEntry& s : snapshots) {
+    const std::string where = data_file + ":/snapshots/" + s.name + "/";
+    auto item = [&](const std::string& dataset, bool vector, const char* type, int precision) {
+      xml << "          <DataItem Dimensions=\"" << s.count << (vector ? " 3" : "")
+          << "\" NumberType=\"" << type << "\" Precision=\"" << precision << "\" Format=\"HDF\">"
+          << where << dataset << "</DataItem>\n";
+    };
+    auto attribute = [&](const std::string& dataset, bool vector, const char* type, int precision) {
+      xml << "        <Attribute Name=\"" << dataset << "\" AttributeType=\""
+          << (vector ? "Vector" : "Scalar") << "\" Center=\"Node\">\n";
+      item(dataset, vector, type, precision);
+      xml << "        </Attribute>\n";
+    };
+    xml << "      <Grid Name=\"snapshot_" << s.name << "\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << s.time << "\"/>\n"
+        << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << s.count
+        << "\" NodesPerElement=\"1\"/>\n"
+        << "        <Geometry GeometryType=\"XYZ\">\n";
+    item("position", true, "Float", 8);
+    xml << "        </Geometry>\n";
+    attribute("radius", false, "Float", 8);
+    attribute("velocity", true, "Float", 8);
+    attribute("spin", true, "Float", 8);
+    attribute("species", false, "Int", 4);
+    attribute("id", false, "Int", 8);
+    xml << "      </Grid>\n";
+  }
+  xml << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+
+  // Written aside and renamed, so that a viewer never reads half a file.
+  const std::string sidecar = xdmf_path_of(path);
+  const std::string temporary = sidecar + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    out << xml.str();
+    if (!out.flush()) throw std::runtime_error(temporary + ": cannot write the XDMF sidecar");
+  }
+  if (std::rename(temporary.c_str(), sidecar.c_str()) != 0)
+    throw std::runtime_error(sidecar +
+                             ": cannot replace the XDMF sidecar: " + std::strerror(errno));
+}
+
+// ---- checkpoints ------------------------------------------------------------------------------
+
+namespace {
+
+/// One Event per particle as four parallel datasets: time, partner, partner_counter, kind.
+void write_events(const h5::Group& group, const std::vector<Event>& list) {
+  std::vector<double> time;
+  std::vector<std::int32_t> partner;
+  std::vector<std::uint32_t> partner_counter;
+  std::vector<std::uint8_t> kind;
+  for (const Event& e : list) {
+    time.push_back(e.time);
+    partner.push_back(e.partner);
+    partner_counter.push_back(e.partner_counter);
+    kind.push_back(static_cast<std::uint8_t>(e.kind));
+  }
+  group.write("time", time);
+  group.write("partner", partner);
+  group.write("partner_counter", partner_counter);
+  group.write("kind", kind);
+}
+
+std::vector<Event> read_events(const h5::Group& group, hsize_t n) {
+  const std::vector<double> time = group.read<double>("time", {n});
+  const std::vector<std::int32_t> partner = group.read<std::int32_t>("partner", {n});
+  const std::vector<std::uint32_t> counter = group.read<std::uint32_t>("partner_counter", {n});
+  const std::vector<std::uint8_t> kind = group.read<std::uint8_t>("kind", {n});
+  std::vector<Event> list(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kind[i] > static_cast<std::uint8_t>(EventKind::CellCrossing))
+      group.fail("kind[" + std::to_string(i) + "] is not an event kind");
+    list[i] = Event{time[i], partner[i], counter[i], static_cast<EventKind>(kind[i])};
+  }
+  return list;
+}
+
+void write_state(const h5::Group& group, const EngineState& s) {
+  const std::size_t n = s.particles.size();
+  group.set_attribute("time", s.time);
+  group.set_attribute("last_particle_event", s.last_particle_event);
+  group.set_attribute("stall_window", s.stall_window);
+
+  const ParticleStore& p = s.particles;
+  const h5::Group particles = group.create_group("particles");
+  particles.write("position", flatten(p.position), {n, 3});
+  particles.write("velocity", flatten(p.velocity), {n, 3});
+  particles.write("clock", p.clock);
+  particles.write("radius", p.radius);
+  particles.write("event_counter", p.event_counter);
+  particles.write("spin", flatten(p.spin), {n, 3});
+  particles.write("mass", p.mass);
+  particles.write("inertia", p.inertia);
+  particles.write("last_collision", p.last_collision);
+  particles.write("species", p.species);
+  particles.write("id", p.id);
+
+  std::vector<std::int32_t> cells;
+  for (const auto& c : s.cells) cells.insert(cells.end(), c.begin(), c.end());
+  group.write("cells", cells, {n, 3});
+
+  write_events(group.create_group("events"), s.events);
+  write_events(group.create_group("crossings"), s.crossings);
+
+  const RunStatistics& st = s.statistics;
+  const h5::Group stats = group.create_group("statistics");
+  stats.set_attribute("species_count", static_cast<std::uint64_t>(st.species_count));
+  stats.set_attribute("wall_count", static_cast<std::uint64_t>(st.wall_count));
+  stats.set_attribute("dissipated_energy", st.dissipated_energy);
+  stats.set_attribute("events", st.events);
+  stats.set_attribute("invalid_events", st.invalid_events);
+  stats.set_attribute("pair_events", st.pair_events);
+  stats.set_attribute("wall_events", st.wall_events);
+  stats.set_attribute("cell_crossings", st.cell_crossings);
+  stats.write("pair_collisions", st.pair_collisions);
+  stats.write("wall_collisions", st.wall_collisions);
+  stats.write("wall_impulse",
+              flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
+              {st.wall_impulse.size(), 3});
+  stats.write("virial", row_major(st.virial), {3, 3});
+
+  group.write("stall_window_start", s.stall_window_start);
+  group.write("stall_count", s.stall_count);
+
+  const h5::Group actions = group.create_group("actions");
+  std::vector<std::string> names;
+  std::vector<double> next_time;
+  for (const auto& [name, t] : s.action_times) {
+    names.push_back(name);
+    next_time.push_back(t);
+  }
+  actions.write_strings("name", names);
+  actions.write("next_time", next_time);
+}
+
+EngineState read_state(const h5::Group& group) {
+  EngineState s;
+  s.time = group.attribute<double>("time");
+  s.last_particle_event = group.attribute<double>("last_particle_event");
+  s.stall_window = group.attribute<double>("stall_window");
+
+  ParticleStore& p = s.particles;
+  const h5::Group particles = group.open_group("particles");
+  const std::vector<hsize_t> shape = particles.open_dataset("position").shape();
+  if (shape.size() != 2 || shape[1] != 3) particles.fail("position must have shape {N, 3}");
+  const hsize_t n = shape[0];
+  p.position = unflatten(particles.read<double>("position", {n, 3}));
+  p.velocity = unflatten(particles.read<double>("velocity", {n, 3}));
+  p.clock = particles.read<double>("clock", {n});
+  p.radius = particles.read<double>("radius", {n});
+  p.event_counter = particles.read<std::uint32_t>("event_counter", {n});
+  p.spin = unflatten(particles.read<double>("spin", {n, 3}));
+  p.mass = particles.read<double>("mass", {n});
+  p.inertia = particles.read<double>("inertia", {n});
+  p.last_collision = particles.read<double>("last_collision", {n});
+  p.species = particles.read<std::uint32_t>("species", {n});
+  p.id = particles.read<std::uint64_t>("id", {n});
+
+  const std::vector<std::int32_t> cells = group.read<std::int32_t>("cells", {n, 3});
+  s.cells.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    s.cells[i] = {cells[3 * i], cells[3 * i + 1], cells[3 * i + 2]};
+
+  s.events = read_events(group.open_group("events"), n);
+  s.crossings = read_events(group.open_group("crossings"), n);
+
+  RunStatistics& st = s.statistics;
+  const h5::Group stats = group.open_group("statistics");
+  const auto species = stats.attribute<std::uint64_t>("species_count");
+  const auto walls = stats.attribute<std::uint64_t>("wall_count");
+  st.resize(species, walls);
+  st.dissipated_energy = stats.attribute<double>("dissipated_energy");
+  st.events = stats.attribute<std::uint64_t>("events");
+  st.invalid_events = stats.attribute<std::uint64_t>("invalid_events");
+  st.pair_events = stats.attribute<std::uint64_t>("pair_events");
+  st.wall_events = stats.attribute<std::uint64_t>("wall_events");
+  st.cell_crossings = stats.attribute<std::uint64_t>("cell_crossings");
+  st.pair_collisions = stats.read<std::uint64_t>("pair_collisions", {species * species});
+  st.wall_collisions = stats.read<std::uint64_t>("wall_collisions", {species * walls});
+  const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
+  st.wall_impulse.assign(impulse.begin(), impulse.end());
+  st.virial = from_row_major(stats.read<double>("virial", {3, 3}));
+
+  s.stall_window_start = group.read<double>("stall_window_start", {n});
+  s.stall_count = group.read<std::uint32_t>("stall_count", {n});
+
+  const h5::Group actions = group.open_group("actions");
+  const std::vector<std::string> names = actions.read_strings("name");
+  const std::vector<double> next_time = actions.read<double>("next_time", {names.size()});
+  for (std::size_t k = 0; k < names.size(); ++k)
+    s.action_times.emplace_back(names[k], next_time[k]);
+  return s;
+}
+
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info) {
+  const EngineState state = sim.state();
+  const std::string temporary = path + ".tmp";
+  bool created = false;
+  try {
+    h5::File file = h5::File::create(temporary);
+    created = true;
+    write_info(file, info, kCheckpointKind);
+    write_state(file.create_group("state"), state);
+    file.close();
+    replace_file(temporary, path);
+  } catch (...) {
+    if (created) std::remove(temporary.c_str());  // The previous checkpoint is untouched.
+    throw;
+  }
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  const h5::File file = h5::File::open(path, false);
+  Checkpoint checkpoint;
+  checkpoint.info = read_info(file, kCheckpointKind);
+  checkpoint.state = read_state(file.open_group("state"));
+  return checkpoint;
+}
+
+}  // namespace carom

@@ -1,0 +1,157 @@
+#include "summary.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "carom/version.hpp"
+#include "enskog.hpp"
+
+namespace carom {
+
+void TimeAverages::sample(const Simulator& sim) {
+  const double kinetic = sim.energies().translational;
+  const std::size_t n = sim.particle_count();
+  const double root = n > 0 ? std::sqrt(2.0 * kinetic / (3.0 * static_cast<double>(n))) : 0.0;
+  const double t = sim.time();
+  if (!started_) {
+    started_ = true;
+    first_time_ = t;
+  } else if (t > last_time_) {
+    kinetic_integral_ += 0.5 * (kinetic + last_kinetic_) * (t - last_time_);
+    root_temperature_integral_ += 0.5 * (root + last_root_) * (t - last_time_);
+  }
+  last_time_ = t;
+  last_kinetic_ = kinetic;
+  last_root_ = root;
+}
+
+namespace {
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buffer[8];
+      std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
+      out += buffer;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string number(double x) { return std::isfinite(x) ? format_number(x) : "null"; }
+
+/// Enskog applies to a homogeneous periodic gas: no gravity, every axis periodic, no walls.
+bool enskog_applies(const System& system) {
+  return !system.flight.has_gravity() && system.walls.empty() && system.domain.periodic[0] &&
+         system.domain.periodic[1] && system.domain.periodic[2];
+}
+}  // namespace
+
+std::string summary_json(const Simulator& sim, const Scene& scene, const RunStretch& stretch) {
+  const System& system = sim.system();
+  const RunStatistics& now = sim.statistics();
+  const RunStatistics& before = stretch.start_statistics;
+  const std::size_t S = system.species.size(), W = system.walls.size();
+  const double dt = sim.time() - stretch.start_time;
+  const double volume = system.domain.volume();
+  const std::uint64_t events = now.events - before.events;
+  const std::uint64_t collisions = now.collisions() - before.collisions();
+
+  std::vector<std::size_t> per_species(S, 0);
+  for (std::uint32_t s : system.particles.species) ++per_species[s];
+
+  std::ostringstream j;
+  j << "{\n";
+  j << "  \"carom_version\": " << quoted(kVersion) << ",\n";
+  j << "  \"scene\": " << quoted(scene.name) << ",\n";
+  j << "  \"status\": " << quoted(stretch.status) << ",\n";
+  j << "  \"message\": " << quoted(stretch.message) << ",\n";
+  j << "  \"start_time\": " << number(stretch.start_time) << ",\n";
+  j << "  \"end_time\": " << number(sim.time()) << ",\n";
+  j << "  \"wall_seconds\": " << number(stretch.wall_seconds) << ",\n";
+  j << "  \"particles\": " << sim.particle_count() << ",\n";
+  j << "  \"events\": " << events << ",\n";
+  j << "  \"collisions\": " << collisions << ",\n";
+  j << "  \"events_total\": " << now.events << ",\n";
+  j << "  \"collisions_total\": " << now.collisions() << ",\n";
+  const double wall = stretch.wall_seconds > 0 ? stretch.wall_seconds : NAN;
+  j << "  \"events_per_second\": " << number(events / wall) << ",\n";
+  j << "  \"collisions_per_second\": " << number(collisions / wall) << ",\n";
+
+  // Rate per particle of s with t: each s-s collision involves two particles of s.
+  j << "  \"collision_rate_per_particle\": {";
+  for (std::size_t s = 0, first = 1; s < S; ++s)
+    for (std::size_t t = 0; t < S; ++t, first = 0) {
+      const double count = static_cast<double>(now.pair(s, t) - before.pair(s, t)) * (s == t ? 2.0 : 1.0);
+      const double rate = per_species[s] > 0 && dt > 0 ? count / (static_cast<double>(per_species[s]) * dt) : NAN;
+      j << (first ? "" : ",") << "\n    " << quoted(system.species[s].name + "-" + system.species[t].name) << ": "
+        << number(rate);
+    }
+  j << "\n  },\n";
+
+  j << "  \"enskog_rate_per_particle\": ";
+  if (enskog_applies(system) && sim.particle_count() > 0) {
+    std::vector<MixtureComponent> mixture;
+    for (std::size_t s = 0; s < S; ++s)
+      mixture.push_back({static_cast<double>(per_species[s]) / volume, system.species[s].diameter, system.species[s].mass()});
+    const double root_t = stretch.averages.root_temperature();
+    j << "{";
+    for (std::size_t s = 0, first = 1; s < S; ++s)
+      for (std::size_t t = 0; t < S; ++t, first = 0)
+        j << (first ? "" : ",") << "\n    " << quoted(system.species[s].name + "-" + system.species[t].name) << ": "
+          << number(enskog_frequency(mixture, s, t, 1.0) * root_t);
+    j << "\n  },\n";
+  } else {
+    j << "null,\n";
+  }
+
+  j << "  \"wall_collisions\": {";
+  for (std::size_t s = 0, first = 1; s < S; ++s)
+    for (std::size_t w = 0; w < W; ++w, first = 0)
+      j << (first ? "" : ",") << "\n    " << quoted(system.species[s].name + "@" + system.walls[w].name) << ": "
+        << (now.wall(s, w) - before.wall(s, w));
+  j << (S * W > 0 ? "\n  " : "") << "},\n";
+  j << "  \"wall_force\": {";
+  for (std::size_t w = 0; w < W; ++w) {
+    const Eigen::Vector3d force = dt > 0 ? Eigen::Vector3d((now.wall_impulse[w] - before.wall_impulse[w]) / dt)
+                                         : Eigen::Vector3d::Constant(NAN);
+    j << (w ? "," : "") << "\n    " << quoted(system.walls[w].name) << ": [" << number(force.x()) << ", "
+      << number(force.y()) << ", " << number(force.z()) << "]";
+  }
+  j << (W ? "\n  " : "") << "},\n";
+
+  const std::size_t n = sim.particle_count();
+  const double kinetic = stretch.averages.kinetic_energy();
+  const double p_kin = 2.0 * kinetic / (3.0 * volume);
+  const double p_coll = dt > 0 ? (now.virial - before.virial).trace() / (3.0 * volume * dt) : NAN;
+  j << "  \"mean_temperature\": " << number(n > 0 ? 2.0 * kinetic / (3.0 * static_cast<double>(n)) : NAN) << ",\n";
+  j << "  \"pressure\": {\"kinetic\": " << number(p_kin) << ", \"collisional\": " << number(p_coll)
+    << ", \"total\": " << number(p_kin + p_coll) << "},\n";
+  const Energies e = sim.energies();
+  j << "  \"energy\": {\"translational\": " << number(e.translational) << ", \"rotational\": " << number(e.rotational)
+    << ", \"potential\": " << number(e.potential) << ", \"dissipated\": " << number(e.dissipated) << "}\n";
+  j << "}\n";
+  return j.str();
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw std::runtime_error(temporary + ": cannot write");
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace carom

@@ -1,0 +1,128 @@
+// HierarchicalGrid::for_each_candidate (core/cell_grid.hpp) against an all-pairs O(N^2) oracle.
+//
+// Required: while i stays in its cell and every j stays in its own cell, any j that could touch i
+// must be visited. That is every j whose cell box comes within a_i + a_j of i's cell box
+// (minimum over periodic images), because j's centre is somewhere in its cell and i's centre
+// somewhere in i's. The oracle computes that box-box distance exactly and asks the grid for a
+// superset (it may visit more), with no particle visited twice and never i itself.
+// The criterion uses a margin of 1e-9 of the contact distance so that exact ties on cell faces
+// (a measure-zero set that round-off decides either way) cannot make the test flaky.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "core/cell_grid.hpp"
+#include "core/rng.hpp"
+
+namespace carom {
+namespace {
+
+double interval_gap(double lo1, double hi1, double lo2, double hi2) {
+  return std::max(0.0, std::max(lo1 - hi2, lo2 - hi1));
+}
+
+double box_distance(const HierarchicalGrid& grid, std::int32_t i, std::int32_t j) {
+  const Domain& d = grid.domain();
+  const Vec3 li = grid.cell_lower(i), ui = grid.cell_upper(i), lj = grid.cell_lower(j), uj = grid.cell_upper(j);
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double gap = interval_gap(li[k], ui[k], lj[k], uj[k]);
+    if (d.periodic[k]) {
+      const double L = d.length()[k];
+      gap = std::min({gap, interval_gap(li[k], ui[k], lj[k] + L, uj[k] + L),
+                      interval_gap(li[k], ui[k], lj[k] - L, uj[k] - L)});
+    }
+    sum += gap * gap;
+  }
+  return std::sqrt(sum);
+}
+
+struct GridCase {
+  const char* name;
+  std::vector<double> diameters;  // drawn uniformly per particle
+  Vec3 length;
+  std::array<bool, 3> periodic;
+  int count;
+  double level_ratio;
+};
+
+class GridOracle : public ::testing::TestWithParam<GridCase> {};
+
+TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
+  const GridCase& c = GetParam();
+  Rng rng(77);
+  Domain domain;
+  domain.lower = Vec3(-1.0, 0.5, 2.0);
+  domain.upper = domain.lower + c.length;
+  domain.periodic = c.periodic;
+  std::vector<double> radius(c.count);
+  std::vector<Vec3> position(c.count);
+  for (int i = 0; i < c.count; ++i) {
+    radius[i] = 0.5 * c.diameters[rng.below(c.diameters.size())];
+    for (int k = 0; k < 3; ++k) position[i][k] = domain.lower[k] + rng.uniform() * c.length[k];
+  }
+  HierarchicalGrid grid(domain, radius, c.level_ratio);
+  for (int i = 0; i < c.count; ++i) grid.insert(i, position[i]);
+  long required = 0, visited_total = 0;
+  for (std::int32_t i = 0; i < c.count; ++i) {
+    std::vector<int> seen(c.count, 0);
+    grid.for_each_candidate(i, radius[i], [&](std::int32_t j) {
+      ASSERT_NE(j, i) << "a particle is its own candidate";
+      ++seen[j];
+      ++visited_total;
+    });
+    for (std::int32_t j = 0; j < c.count; ++j) {
+      ASSERT_LE(seen[j], 1) << c.name << ": particle " << j << " visited twice from " << i;
+      if (j == i) continue;
+      const double contact = radius[i] + radius[j];
+      if (box_distance(grid, i, j) < contact * (1.0 - 1e-9)) {
+        ++required;
+        ASSERT_EQ(seen[j], 1) << c.name << ": missed partner " << j << " (a=" << radius[j] << ", level "
+                              << grid.level_of(j) << ") of " << i << " (a=" << radius[i] << ", level "
+                              << grid.level_of(i) << "), cell distance " << box_distance(grid, i, j)
+                              << " < contact " << contact;
+      }
+    }
+  }
+  EXPECT_GT(required, c.count) << "the case must exercise many required pairs";
+  // The hierarchy must also be worth having: far fewer visits than all pairs.
+  EXPECT_LT(visited_total, 0.5 * double(c.count) * c.count);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Polydisperse, GridOracle,
+    ::testing::Values(
+        GridCase{"ratio 1:2 periodic", {1.0, 0.5}, Vec3(12, 10, 11), {true, true, true}, 3000, 0.5},
+        GridCase{"ratio 1:5 walled", {1.0, 0.2}, Vec3(12, 10, 11), {false, false, false}, 3000, 0.5},
+        GridCase{"ratio 1:10 mixed axes", {1.0, 0.1}, Vec3(9.3, 8.1, 7.7), {true, false, true}, 4000, 0.5},
+        GridCase{"three sizes", {1.0, 0.45, 0.1, 0.07}, Vec3(10.5, 9.2, 8.8), {false, true, false}, 4000, 0.5},
+        GridCase{"1:10 one grid", {1.0, 0.1}, Vec3(9, 9, 9), {true, true, true}, 2000, 0.0},
+        GridCase{"1:10 fine level ratio", {1.0, 0.1, 0.3}, Vec3(9, 9, 9), {true, true, false}, 3000, 0.9},
+        GridCase{"four cells per axis", {1.0, 0.2}, Vec3(4.3, 4.9, 4.1), {true, true, true}, 600, 0.5}),
+    [](const ::testing::TestParamInfo<GridCase>& info) { return "case" + std::to_string(info.index); });
+
+// Moving a particle across faces (with periodic wraps) keeps it findable and its shift right.
+TEST(GridCrossing, CrossingFacesWrapsPeriodicAxes) {
+  Domain domain;
+  domain.upper = Vec3(4, 5, 6);
+  domain.periodic = {true, false, true};
+  HierarchicalGrid grid(domain, {0.5, 0.5}, 0.5);
+  grid.insert(0, Vec3(0.1, 0.1, 5.9));
+  grid.insert(1, Vec3(3.9, 0.1, 0.1));
+  // 0 and 1 are neighbours through the x and z boundaries.
+  int found = 0;
+  grid.for_each_candidate(0, 0.5, [&](std::int32_t j) { found += j == 1; });
+  EXPECT_EQ(found, 1);
+  const Vec3 shift = grid.cross(0, 0, -1);  // leave through x = 0
+  EXPECT_EQ(shift, Vec3(4, 0, 0));
+  EXPECT_EQ(grid.cell_of(0)[0], grid.levels()[0].cells[0] - 1);
+  const Vec3 shift_z = grid.cross(0, 2, +1);  // leave through z = 6
+  EXPECT_EQ(shift_z, Vec3(0, 0, -6));
+  EXPECT_EQ(grid.cell_of(0)[2], 0);
+  EXPECT_TRUE(grid.is_outer_face(0, 1, -1));
+  EXPECT_FALSE(grid.is_outer_face(0, 0, -1));
+}
+
+}  // namespace
+}  // namespace carom

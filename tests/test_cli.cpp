@@ -1,0 +1,231 @@
+// The `carom` command, run as a user runs it: exit codes, what it writes (and never writes for
+// a bad scene), signals, and bit-for-bit resume: a run interrupted at T (by its end time or by
+// SIGINT) and resumed must end in exactly the state of the uninterrupted run, particle by
+// particle (positions, velocities, spins, clocks compared with ==, not a tolerance: the
+// dynamics is deterministic and a checkpoint stores every double as it is).
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "scenarios/run_output.hpp"
+
+namespace fs = std::filesystem;
+using namespace carom;
+
+extern char** environ;
+
+namespace {
+
+const std::string kCarom = CAROM_BINARY;
+const std::string kScenes = CAROM_SCENES_DIR;
+
+/// A fresh directory per test, removed afterwards.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("carom_cli_" + std::to_string(getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Runs `carom ARGS` in the test directory; returns the exit code; output in out_.
+  int carom(const std::string& args) {
+    const std::string log = (dir_ / "log.txt").string();
+    // timeout: a hang fails the test (exit 124/137) instead of stalling the suite.
+    const std::string command = "cd '" + dir_.string() + "' && timeout -k 5 60 '" + kCarom + "' " + args + " > '" + log + "' 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    out_ = text.str();
+    fs::remove(log);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  /// Writes a scene file into the test directory.
+  std::string scene(const std::string& name, const std::string& text) {
+    std::ofstream((dir_ / name).string()) << text;
+    return name;
+  }
+
+  fs::path dir_;
+  std::string out_;
+};
+
+/// A small elastic gas that runs in well under a second.
+const std::string kSmallGas =
+    "[domain]\nmin = [0, 0, 0]\nmax = [8.0, 8.0, 8.0]\nperiodic = [\"x\", \"y\", \"z\"]\n"
+    "[[species]]\nname = \"a\"\ndiameter = 1.0\ndensity = 1.909859317102744\nfill = { volume_fraction = 0.25 }\n"
+    "[[species]]\nname = \"b\"\ndiameter = 0.6\ndensity = 1.909859317102744\nfill = { count = 100 }\n"
+    "[collisions]\ndefault = { e = 0.95, mu = 0.2, beta0 = 0.3 }\n"
+    "[initial]\ntemperature = 1.0\n"
+    "[time]\nend = 4.0\n"
+    "[output]\nsnapshot_every = 0.5\nsample_every = 0.1\n";
+
+/// Final states by particle id.
+std::map<std::uint64_t, std::size_t> by_id(const ParticleStore& p) {
+  std::map<std::uint64_t, std::size_t> index;
+  for (std::size_t i = 0; i < p.size(); ++i) index[p.id[i]] = i;
+  return index;
+}
+
+/// Every particle's stored state and the counters are identical, bit for bit.
+void expect_identical(const Checkpoint& a, const Checkpoint& b) {
+  ASSERT_EQ(a.state.time, b.state.time);
+  const ParticleStore& p = a.state.particles;
+  const ParticleStore& q = b.state.particles;
+  ASSERT_EQ(p.size(), q.size());
+  const auto ia = by_id(p), ib = by_id(q);
+  std::size_t differing = 0;
+  for (const auto& [id, i] : ia) {
+    const std::size_t j = ib.at(id);
+    const bool same = p.position[i] == q.position[j] && p.velocity[i] == q.velocity[j] && p.spin[i] == q.spin[j] &&
+                      p.clock[i] == q.clock[j] && p.event_counter[i] == q.event_counter[j];
+    if (!same && differing++ < 3)
+      ADD_FAILURE() << "particle " << id << " differs: position " << p.position[i].transpose() << " vs "
+                    << q.position[j].transpose();
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_EQ(a.state.statistics.events, b.state.statistics.events);
+  EXPECT_EQ(a.state.statistics.pair_collisions, b.state.statistics.pair_collisions);
+  EXPECT_EQ(a.state.statistics.dissipated_energy, b.state.statistics.dissipated_energy);
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(carom(""), 2) << out_;
+  EXPECT_EQ(carom("fly scene.toml"), 2) << out_;
+  EXPECT_EQ(carom("run"), 2) << out_;
+  EXPECT_EQ(carom("run x.toml --bogus"), 2) << out_;
+  EXPECT_EQ(carom("--help"), 0) << out_;
+  EXPECT_NE(out_.find("Exit codes"), std::string::npos);
+  EXPECT_EQ(carom("run missing.toml"), 2) << out_;
+  EXPECT_NE(out_.find("missing.toml: cannot open"), std::string::npos) << out_;
+  EXPECT_EQ(carom("resume nowhere"), 2) << out_;
+  EXPECT_EQ(carom("info nothing.h5"), 2) << out_;
+}
+
+TEST_F(Cli, CheckShippedScenes) {
+  for (const char* name : {"elastic_gas", "haff_cooling", "bidisperse_gas", "settling_column"}) {
+    EXPECT_EQ(carom("check '" + kScenes + "/" + name + ".toml'"), 0) << name << ": " << out_;
+    EXPECT_NE(out_.find("grid"), std::string::npos);
+  }
+  EXPECT_EQ(carom("check '" + kScenes + "/elastic_gas.toml'"), 0);
+  EXPECT_NE(out_.find("rotation: off"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("Enskog"), std::string::npos) << out_;
+  EXPECT_TRUE(fs::is_empty(dir_)) << "check must write nothing";
+}
+
+TEST_F(Cli, BadSceneExitsTwoAndLeavesNothing) {
+  // The error is found only after parsing (an overlap of listed particles): still nothing written.
+  const std::string bad = scene("bad.toml",
+                                "[domain]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n"
+                                "[[species]]\nname = \"a\"\ndiameter = 0.1\ndensity = 1000\n"
+                                "[[particles]]\nspecies = \"a\"\nposition = [0.5, 0.5, 0.5]\n"
+                                "[[particles]]\nspecies = \"a\"\nposition = [0.55, 0.5, 0.5]\n"
+                                "[time]\nend = 1\n");
+  EXPECT_EQ(carom("run " + bad + " --out result"), 2) << out_;
+  EXPECT_NE(out_.find("overlaps"), std::string::npos) << out_;
+  EXPECT_FALSE(fs::exists(dir_ / "result"));
+  EXPECT_FALSE(fs::exists(dir_ / "bad.out"));
+  const std::string typo = scene("typo.toml", kSmallGas + "[engine]\ngrid_ratio = 0.5\n");
+  EXPECT_EQ(carom("run " + typo), 2) << out_;
+  EXPECT_NE(out_.find("typo.toml:"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("did you mean 'engine.grid_level_ratio'"), std::string::npos) << out_;
+  EXPECT_FALSE(fs::exists(dir_ / "typo.out"));
+  // A bad --set is a bad scene too.
+  EXPECT_EQ(carom("run " + scene("gas.toml", kSmallGas) + " --set collisions.default.e=1.5"), 2) << out_;
+  EXPECT_NE(out_.find("collisions.default.e = 1.5"), std::string::npos) << out_;
+  EXPECT_FALSE(fs::exists(dir_ / "gas.out"));
+}
+
+TEST_F(Cli, RunWritesOutputsAndRefusesToOverwrite) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  ASSERT_EQ(carom("run " + gas + " --out r --quiet --set time.end=1.0"), 0) << out_;
+  for (const char* file : {"run.h5", "run.xmf", "checkpoint.h5", "summary.json"}) EXPECT_TRUE(fs::exists(dir_ / "r" / file)) << file;
+  const std::string summary = read(dir_ / "r" / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"completed\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"end_time\": 1,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"a-b\""), std::string::npos) << summary;
+  const auto written = fs::last_write_time(dir_ / "r" / "run.h5");
+  EXPECT_EQ(carom("run " + gas + " --out r --quiet"), 2) << out_;
+  EXPECT_NE(out_.find("already holds"), std::string::npos) << out_;
+  EXPECT_EQ(fs::last_write_time(dir_ / "r" / "run.h5"), written);
+  EXPECT_EQ(carom("info r/run.h5"), 0) << out_;
+  EXPECT_NE(out_.find("snapshots"), std::string::npos) << out_;
+  EXPECT_EQ(carom("info r/checkpoint.h5"), 0) << out_;
+  EXPECT_EQ(carom("resume r --quiet"), 0) << out_;  // already at its end: nothing to do
+  EXPECT_EQ(carom("resume r --end 0.5 --quiet"), 2) << out_;  // before the checkpoint
+}
+
+TEST_F(Cli, CollapseExitsOne) {
+  // Three nearly inelastic spheres on a line (e = 0.05, below the 1-D collapse threshold
+  // 7 - 4 sqrt(3) = 0.072): the collision sequence converges in finite time, the stall detector fires.
+  const std::string line = scene("line.toml",
+                                 "[domain]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n"
+                                 "[[species]]\nname = \"ball\"\ndiameter = 0.1\ndensity = 1000\n"
+                                 "[[particles]]\nspecies = \"ball\"\nposition = [0.3, 0.5, 0.5]\nvelocity = [1, 0, 0]\n"
+                                 "[[particles]]\nspecies = \"ball\"\nposition = [0.5, 0.5, 0.5]\n"
+                                 "[[particles]]\nspecies = \"ball\"\nposition = [0.7, 0.5, 0.5]\nvelocity = [-0.2, 0, 0]\n"
+                                 "[collisions]\ndefault = { e = 0.05 }\ncollapse = { stall_collisions = 100 }\n"
+                                 "[time]\nend = 2\n");
+  EXPECT_EQ(carom("run " + line + " --out c --quiet"), 1) << out_;
+  EXPECT_NE(out_.find("inelastic collapse"), std::string::npos) << out_;
+  EXPECT_NE(read(dir_ / "c" / "summary.json").find("\"status\": \"inelastic_collapse\""), std::string::npos);
+}
+
+TEST_F(Cli, ResumeAfterEndTimeIsBitForBit) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  ASSERT_EQ(carom("run " + gas + " --out whole --quiet"), 0) << out_;
+  ASSERT_EQ(carom("run " + gas + " --out split --quiet --set time.end=2.0"), 0) << out_;
+  ASSERT_EQ(carom("resume split --end 4.0 --quiet"), 0) << out_;
+  expect_identical(read_checkpoint((dir_ / "whole" / "checkpoint.h5").string()),
+                   read_checkpoint((dir_ / "split" / "checkpoint.h5").string()));
+}
+
+TEST_F(Cli, ResumeAfterSigintIsBitForBit) {
+  // A run long enough to be interrupted mid-way; SIGINT makes it checkpoint and exit 130.
+  const std::string gas = scene("gas.toml", kSmallGas);
+  pid_t pid = 0;
+  const std::string out_arg = (dir_ / "split").string();
+  std::vector<std::string> args{kCarom, "run", (dir_ / gas).string(), "--out", out_arg, "--quiet", "--set", "time.end=100000"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  ASSERT_EQ(posix_spawn(&pid, kCarom.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 130);
+  const Checkpoint stopped = read_checkpoint((dir_ / "split" / "checkpoint.h5").string());
+  EXPECT_NE(read(dir_ / "split" / "summary.json").find("\"status\": \"interrupted\""), std::string::npos);
+  ASSERT_GT(stopped.state.time, 0.0);
+  // Continue a little past the interruption and compare with a run that never stopped.
+  const std::string end = std::to_string(std::ceil(stopped.state.time) + 1.0);
+  ASSERT_EQ(carom("resume split --end " + end + " --quiet"), 0) << out_;
+  ASSERT_EQ(carom("run " + gas + " --out whole --quiet --set time.end=" + end), 0) << out_;
+  expect_identical(read_checkpoint((dir_ / "whole" / "checkpoint.h5").string()),
+                   read_checkpoint((dir_ / "split" / "checkpoint.h5").string()));
+}

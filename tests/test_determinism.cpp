@@ -1,0 +1,111 @@
+// Determinism (DESIGN.md section 6, STYLE.md): the same system run twice gives bit-identical
+// states, and Simulator::state() + the restoring constructor continue bit for bit like the
+// uninterrupted run. Exact (bitwise) comparison: anything else is not determinism.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "core/rng.hpp"
+
+#include "scenarios/granular_gas.hpp"
+#include "test_support.hpp"
+
+namespace carom {
+namespace {
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+void expect_identical(const EngineState& a, const EngineState& b) {
+  const ParticleStore &p = a.particles, &q = b.particles;
+  EXPECT_TRUE(same_bits(p.position, q.position)) << "positions differ";
+  EXPECT_TRUE(same_bits(p.velocity, q.velocity)) << "velocities differ";
+  EXPECT_TRUE(same_bits(p.spin, q.spin)) << "spins differ";
+  EXPECT_TRUE(same_bits(p.clock, q.clock)) << "clocks differ";
+  EXPECT_TRUE(same_bits(p.event_counter, q.event_counter)) << "event counters differ";
+  EXPECT_TRUE(same_bits(p.last_collision, q.last_collision));
+  EXPECT_TRUE(same_bits(p.id, q.id));
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.statistics.events, b.statistics.events);
+  EXPECT_EQ(a.statistics.pair_events, b.statistics.pair_events);
+  EXPECT_EQ(a.statistics.wall_events, b.statistics.wall_events);
+  EXPECT_EQ(a.statistics.pair_collisions, b.statistics.pair_collisions);
+  EXPECT_EQ(std::memcmp(&a.statistics.dissipated_energy, &b.statistics.dissipated_energy, sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(a.statistics.virial.data(), b.statistics.virial.data(), 9 * sizeof(double)), 0);
+}
+
+// A rough inelastic bidisperse periodic gas (e = 0.95, mu = 0.3, beta0 = 0.2) with a sample action.
+System rough_mixture() {
+  GranularGasSpec spec;
+  spec.count = 400;
+  spec.volume_fraction = 0.25;
+  spec.fines_diameter_ratio = 0.4;
+  spec.fines_number_fraction = 0.5;
+  spec.seed = 9;
+  System system = make_granular_gas(spec);
+  system.materials = MaterialTable(system.species.size(), 0, ContactLaw{0.95, 0.3, 0.2}, ContactLaw{});
+  return system;
+}
+
+TEST(Determinism, SameSystemTwiceIsBitIdentical) {
+  auto run = [] {
+    Simulator sim(rough_mixture());
+    int samples = 0;
+    sim.add_periodic_action("sample", 0.125, 0.125, [&] { ++samples; });  // exact binary times
+    sim.run_until(3.0);
+    EXPECT_EQ(samples, 23) << "0.125, 0.25, ..., 2.875: an action due exactly at the end time comes after the end";
+    return sim.state();
+  };
+  const EngineState a = run(), b = run();
+  EXPECT_GT(a.statistics.pair_events, 2000u);
+  expect_identical(a, b);
+}
+
+TEST(Determinism, RestoredStateContinuesBitForBit) {
+  const System system = rough_mixture();
+  Simulator uninterrupted(system);
+  int samples_a = 0, samples_b = 0;
+  uninterrupted.add_periodic_action("sample", 0.125, 0.125, [&] { ++samples_a; });
+  uninterrupted.run_until(1.234);
+  const EngineState saved = uninterrupted.state();
+  uninterrupted.run_until(3.0);
+
+  Simulator restored(system, SimulatorOptions{}, saved);
+  restored.add_periodic_action("sample", 0.125, 0.125, [&] { ++samples_b; });
+  restored.run_until(3.0);
+  EXPECT_EQ(samples_a, 23);
+  EXPECT_EQ(samples_b, 23 - 9) << "the action resumes at its saved next time";
+  expect_identical(uninterrupted.state(), restored.state());
+}
+
+// The same with walls, gravity and the TC model (a slab one grid cell high).
+TEST(Determinism, RestoredStateContinuesBitForBitWithWallsAndGravity) {
+  test::expect_finishes(20, [] {
+                System system;
+                system.domain.upper = Vec3(8, 8, 1.9);
+                system.species = {Species{"big", 1.0, 1000.0}, Species{"small", 0.5, 1000.0}};
+                system.walls = box_walls(system.domain);
+                system.materials = MaterialTable(2, system.walls.size(), ContactLaw{0.8, 0.4, 0.3},
+                                                 ContactLaw{0.7, 0.5, 0.0});
+                system.flight.gravity = Vec3(0, 0, -9.81);
+                Rng rng(4);
+                for (int k = 0; k < 40; ++k)
+                  system.add_particle(k % 2, Vec3(0.6 + 1.1 * (k % 7), 0.6 + 1.1 * (k / 7), 0.6 + 0.6 * rng.uniform()),
+                                      3.0 * rng.normal3(), 3.0 * rng.normal3());
+                SimulatorOptions options;
+                options.collapse.contact_time = 1e-4;
+                Simulator a(system, options);
+                a.run_until(0.7);
+                const EngineState saved = a.state();
+                a.run_until(2.0);
+                Simulator b(system, options, saved);
+                b.run_until(2.0);
+                EXPECT_GT(a.statistics().collisions(), 1000u);
+                expect_identical(a.state(), b.state());
+              });
+}
+
+}  // namespace
+}  // namespace carom

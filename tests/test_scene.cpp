@@ -1,0 +1,275 @@
+// Scene files: the shipped scenes parse and build; every class of user error is caught before a
+// run starts, with a message that names the file, the line, the key, the value and what is
+// allowed; --set overrides change the table before validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scenarios/scene.hpp"
+
+using namespace carom;
+
+namespace {
+
+/// A small valid scene; tests append to it. Line numbers: [domain] is line 1.
+const std::string kBase =
+    "[domain]\n"                                 // 1
+    "min = [0.0, 0.0, 0.0]\n"                    // 2
+    "max = [0.01, 0.01, 0.01]\n"                 // 3
+    "[[species]]\n"                              // 4
+    "name = \"bead\"\n"                          // 5
+    "diameter = 1.0e-3\n"                        // 6
+    "density = 2500.0\n"                         // 7
+    "fill = { count = 20 }\n"                    // 8
+    "[time]\n"                                   // 9
+    "end = 0.1\n";                               // 10
+
+/// Parses and builds; returns the SceneError message ("" when the scene is fine).
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    Scene scene = parse_scene(text, "bad.toml", overrides);
+    build_initial_state(scene);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The message must contain every fragment (file:line, key, value, allowed range ...).
+void expect_error(const std::string& text, const std::vector<std::string>& fragments,
+                  const std::vector<std::string>& overrides = {}) {
+  const std::string message = error_of(text, overrides);
+  ASSERT_FALSE(message.empty()) << "accepted:\n" << text;
+  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+// ---- shipped scenes ------------------------------------------------------------------------
+
+struct ShippedScene {
+  const char* file;
+  std::size_t particles;  // what the scene's fills produce (documented in the files' comments)
+};
+
+class ShippedScenes : public ::testing::TestWithParam<ShippedScene> {};
+
+TEST_P(ShippedScenes, ParseBuildAndValidate) {
+  const std::string path = std::string(CAROM_SCENES_DIR) + "/" + GetParam().file;
+  Scene scene = load_scene(path);
+  build_initial_state(scene);
+  EXPECT_EQ(scene.system.particles.size(), GetParam().particles);
+  EXPECT_GT(scene.end_time, 0.0);
+  EXPECT_NO_THROW(validate_initial_state(scene.system));
+  EXPECT_NO_THROW(Simulator(scene.system, scene.options));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
+                         ::testing::Values(ShippedScene{"elastic_gas.toml", 990}, ShippedScene{"haff_cooling.toml", 1528},
+                                           ShippedScene{"bidisperse_gas.toml", 1049},
+                                           ShippedScene{"settling_column.toml", 400}),
+                         [](const auto& info) {
+                           std::string name = info.param.file;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(Scene, ReadsEverySection) {
+  const std::string text = kBase +
+                           "[meta]\nname = \"demo\"\ndescription = \"all sections\"\n"
+                           "[collisions]\n"
+                           "default = { e = 0.9, mu = 0.2, beta0 = 0.1 }\n"
+                           "walls = { e = 0.8 }\n"
+                           "collapse = { model = \"tc\", contact_time = 1e-5 }\n"
+                           "[[collisions.wall]]\nwall = \"z_low\"\ne = 0.5\n"
+                           "[initial]\nseed = 5\ntemperature = 1e-9\n"
+                           "[output]\nsnapshot_every = 0.01\nsample_every = 0.001\ncheckpoint_every = 0.05\n"
+                           "[engine]\ngrid_level_ratio = 0.4\n";
+  Scene scene = parse_scene(text, "demo.toml");
+  EXPECT_EQ(scene.name, "demo");
+  EXPECT_EQ(scene.system.walls.size(), 6u);  // no periodic axis: six box walls
+  EXPECT_DOUBLE_EQ(scene.system.materials.pair(0, 0).restitution, 0.9);
+  // walls inherit mu and beta0 from default, e from walls; z_low is overridden.
+  EXPECT_DOUBLE_EQ(scene.system.materials.wall(0, 0).restitution, 0.8);
+  EXPECT_DOUBLE_EQ(scene.system.materials.wall(0, 0).friction, 0.2);
+  EXPECT_DOUBLE_EQ(scene.system.materials.wall(0, 4).restitution, 0.5);
+  EXPECT_EQ(scene.system.walls[4].name, "z_low");
+  EXPECT_DOUBLE_EQ(scene.options.collapse.contact_time, 1e-5);
+  EXPECT_EQ(scene.seed, 5u);
+  EXPECT_DOUBLE_EQ(scene.output.checkpoint_every, 0.05);
+  EXPECT_DOUBLE_EQ(scene.options.grid_level_ratio, 0.4);
+  build_initial_state(scene);
+  EXPECT_EQ(scene.system.particles.size(), 20u);
+}
+
+// ---- every class of invalid input ---------------------------------------------------------
+
+TEST(SceneErrors, RestitutionAboveOne) {
+  expect_error(kBase + "[collisions]\ndefault = { e = 1.2 }\n",
+               {"bad.toml:12", "collisions.default.e = 1.2", "outside the allowed range [0, 1]", "normal restitution"});
+}
+
+TEST(SceneErrors, NegativeDiameter) {
+  expect_error(replace(kBase, "diameter = 1.0e-3", "diameter = -1.0e-3"),
+               {"bad.toml:6", "species[0].diameter = -0.001", "(0, inf)", "diameter"});
+}
+
+TEST(SceneErrors, NotANumber) {
+  expect_error(replace(kBase, "density = 2500.0", "density = nan"),
+               {"bad.toml:7", "species[0].density = nan", "not a finite number", "(0, inf)"});
+  expect_error(replace(kBase, "density = 2500.0", "density = \"heavy\""), {"bad.toml:7", "not a number"});
+}
+
+TEST(SceneErrors, UnknownKeySuggestsClosest) {
+  expect_error(replace(kBase, "min = [0.0, 0.0, 0.0]", "min = [0.0, 0.0, 0.0]\ngravty = [0, 0, -9.81]"),
+               {"bad.toml:3", "unknown key 'domain.gravty'", "did you mean 'domain.gravity'"});
+  expect_error(kBase + "[colisions]\ndefault = { e = 0.9 }\n", {"unknown key 'colisions'", "did you mean 'collisions'"});
+  expect_error(kBase + "[collisions]\ndefault = { e = 0.9, muu = 0.1 }\n",
+               {"bad.toml:12", "collisions.default.muu", "did you mean 'collisions.default.mu'"});
+}
+
+TEST(SceneErrors, WrongChoiceSuggestsClosest) {
+  expect_error(kBase + "[collisions]\ncollapse = { model = \"tcc\", contact_time = 1e-5 }\n",
+               {"bad.toml:12", "collisions.collapse.model = \"tcc\"", "one of \"none\", \"tc\"", "did you mean \"tc\""});
+}
+
+TEST(SceneErrors, GasIsNotYetSupported) {
+  expect_error(kBase + "[gas]\ncoupling = \"two-way\"\n", {"bad.toml:11", "[gas] is not yet supported"});
+  expect_error(kBase + "[flight]\nmodel = \"relax\"\n", {"bad.toml:12", "flight.model = \"relax\"", "not yet supported"});
+}
+
+TEST(SceneErrors, OverlappingParticlesNamed) {
+  const std::string text = replace(kBase, "fill = { count = 20 }\n", "") +
+                           "[[particles]]\nspecies = \"bead\"\nposition = [0.005, 0.005, 0.005]\n"
+                           "[[particles]]\nspecies = \"bead\"\nposition = [0.0055, 0.005, 0.005]\n";
+  expect_error(text, {"bad.toml", "initial state", "particle 0", "particle 1", "overlaps", "bad.toml:10", "bad.toml:13"});
+}
+
+TEST(SceneErrors, ParticleThroughAWall) {
+  const std::string text = replace(kBase, "fill = { count = 20 }\n", "") +
+                           "[[particles]]\nspecies = \"bead\"\nposition = [0.0002, 0.005, 0.005]\n";
+  expect_error(text, {"bad.toml", "particle 0", "overlaps wall 'x_low'"});
+  const std::string outside = replace(kBase, "fill = { count = 20 }\n", "") +
+                              "[[particles]]\nspecies = \"bead\"\nposition = [0.02, 0.005, 0.005]\n";
+  expect_error(outside, {"particle 0", "outside the domain"});
+}
+
+TEST(SceneErrors, BadContactLaws) {
+  expect_error(kBase + "[collisions]\ndefault = { beta0 = 1.5 }\n", {"collisions.default.beta0 = 1.5", "[-1, 1]"});
+  expect_error(kBase + "[collisions]\ndefault = { mu = -0.1 }\n", {"collisions.default.mu = -0.1", "[0, inf)"});
+  expect_error(kBase + "[collisions]\ndefault = { mu = 0.5, mu_static = 0.2 }\n",
+               {"collisions.default.mu_static = 0.2", "[0.5, inf)"});
+  expect_error(kBase + "[[collisions.pair]]\nspecies = [\"bead\", \"sand\"]\ne = 0.5\n",
+               {"bad.toml:12", "collisions.pair[0].species", "\"sand\", which is no species"});
+}
+
+TEST(SceneErrors, StructureAndSyntax) {
+  expect_error("[domain\nmin = 1\n", {"bad.toml:1", "not valid TOML"});
+  expect_error(replace(kBase, "[time]\nend = 0.1\n", ""), {"[time] section is missing"});
+  expect_error(replace(kBase, "end = 0.1", "end = 0"), {"bad.toml:10", "time.end = 0", "(0, inf)"});
+  expect_error(replace(kBase, "max = [0.01, 0.01, 0.01]", "max = [0.01, -0.01, 0.01]"), {"bad.toml:3", "domain.max", "must exceed"});
+  expect_error(replace(kBase, "max = [0.01, 0.01, 0.01]", "max = [0.01, 0.01]"), {"bad.toml:3", "three numbers"});
+  expect_error(kBase + "[domain.extra]\n", {"unknown key 'domain.extra'"});
+  expect_error(replace(kBase, "min = [0.0, 0.0, 0.0]", "min = [0.0, 0.0, 0.0]\nperiodic = [\"w\"]"),
+               {"domain.periodic", "\"w\""});
+}
+
+TEST(SceneErrors, FillsAndRegions) {
+  expect_error(replace(kBase, "fill = { count = 20 }", "fill = { count = -3 }"), {"bad.toml:8", "species[0].fill.count = -3", "[1, 100000000]"});
+  expect_error(replace(kBase, "fill = { count = 20 }", "fill = { count = 20, volume_fraction = 0.1 }"), {"exactly one of"});
+  expect_error(replace(kBase, "fill = { count = 20 }", "fill = { volume_fraction = 0.9 }"), {"volume_fraction = 0.9", "(0, 0.74]"});
+  expect_error(replace(kBase, "fill = { count = 20 }", "fill = { region = \"bedd\", count = 2 }") +
+                   "[regions.bed]\nmin = [0, 0, 0]\nmax = [0.01, 0.01, 0.005]\n",
+               {"species[0].fill.region = \"bedd\"", "did you mean \"bed\""});
+  expect_error(kBase + "[regions.bed]\nmin = [0, 0, 0]\nmax = [0.01, 0.01, 0.05]\n", {"bad.toml:13", "regions.bed.max", "outside the domain"});
+  expect_error(replace(kBase, "fill = { count = 20 }", "fill = { mass_fraction = 0.5 }"), {"mass fractions", "count or volume_fraction"});
+  // Too dense for random insertion: the message points to the lattice.
+  expect_error(replace(kBase, "fill = { count = 20 }", "fill = { volume_fraction = 0.6 }"),
+               {"bad.toml:8", "placed only", "arrangement = \"fcc\""});
+}
+
+// ---- placement ----------------------------------------------------------------------------
+
+TEST(Placement, LatticeReachesHighPacking) {
+  // An FCC lattice holds phi = 0.55 in a periodic box, where random insertion would jam.
+  const std::string text = replace(replace(kBase, "fill = { count = 20 }", "fill = { volume_fraction = 0.55, arrangement = \"fcc\" }"),
+                                   "min = [0.0, 0.0, 0.0]", "min = [0.0, 0.0, 0.0]\nperiodic = [\"x\", \"y\", \"z\"]");
+  Scene scene = parse_scene(text, "fcc.toml");
+  build_initial_state(scene);  // validates: no overlaps
+  const double phi = static_cast<double>(scene.system.particles.size()) * scene.system.species[0].volume() /
+                     scene.system.domain.volume();
+  EXPECT_NEAR(phi, 0.55, 0.002);
+}
+
+TEST(Placement, MassFractionOfAllSolids) {
+  // Two species of equal density: 30 % of the solid mass in fines of 1/8 the particle volume.
+  const std::string text = kBase + "[[species]]\nname = \"fine\"\ndiameter = 0.5e-3\ndensity = 2500.0\nfill = { mass_fraction = 0.3 }\n";
+  Scene scene = parse_scene(text, "mix.toml");
+  const auto counts = fill_counts(scene);
+  // 20 large of mass m; fines: 0.3 M with M = 20 m / 0.7 -> 0.3 * 20 / 0.7 * 8 = 68.6 -> 69.
+  EXPECT_EQ(counts[0], 20u);
+  EXPECT_EQ(counts[1], 69u);
+  build_initial_state(scene);
+  EXPECT_EQ(scene.system.particles.size(), 89u);
+}
+
+TEST(Placement, SameSeedSamePlacementOtherSeedOther) {
+  Scene a = parse_scene(kBase, "a.toml"), b = parse_scene(kBase, "a.toml"), c = parse_scene(kBase, "a.toml", {}, 99);
+  build_initial_state(a);
+  build_initial_state(b);
+  build_initial_state(c);
+  EXPECT_EQ(a.system.particles.position, b.system.particles.position);
+  EXPECT_NE(a.system.particles.position, c.system.particles.position);
+}
+
+TEST(Placement, TemperatureIsExactAndMomentumZero) {
+  Scene scene = parse_scene(kBase + "[initial]\ntemperature = 2e-9\n", "t.toml");
+  build_initial_state(scene);
+  const ParticleStore& p = scene.system.particles;
+  Vec3 momentum = Vec3::Zero();
+  double kinetic = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    momentum += p.mass[i] * p.velocity[i];
+    kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+  }
+  EXPECT_LT(momentum.norm(), 1e-12 * std::sqrt(2e-9 * p.mass[0]) * p.size());
+  EXPECT_NEAR(kinetic, 1.5 * (p.size() - 1) * 2e-9, 1e-12 * kinetic);
+}
+
+// ---- --set overrides ----------------------------------------------------------------------
+
+TEST(Overrides, ChangeValuesBeforeValidation) {
+  Scene scene = parse_scene(kBase, "o.toml",
+                            {"time.end=0.5", "species.bead.diameter=2e-3", "species.0.density=1000",
+                             "collisions.default.e=0.7", "domain.periodic=[\"x\"]", "meta.name=my_run"});
+  EXPECT_DOUBLE_EQ(scene.end_time, 0.5);
+  EXPECT_DOUBLE_EQ(scene.system.species[0].diameter, 2e-3);
+  EXPECT_DOUBLE_EQ(scene.system.species[0].density, 1000.0);
+  EXPECT_DOUBLE_EQ(scene.system.materials.pair(0, 0).restitution, 0.7);
+  EXPECT_TRUE(scene.system.domain.periodic[0]);
+  EXPECT_EQ(scene.name, "my_run");  // not valid TOML, so taken as a string
+}
+
+TEST(Overrides, StoredTextReproducesTheScene) {
+  // The scene text kept for checkpoints holds the overrides: parsing it again gives the same scene.
+  Scene first = parse_scene(kBase, "o.toml", {"collisions.default.e=0.123456789012345678", "time.end=0.25"}, 42);
+  Scene again = parse_scene(first.text, "stored");
+  EXPECT_EQ(again.system.materials.pair(0, 0).restitution, first.system.materials.pair(0, 0).restitution);
+  EXPECT_EQ(again.end_time, 0.25);
+  EXPECT_EQ(again.seed, 42u);
+}
+
+TEST(Overrides, ErrorsNameTheCommandLine) {
+  expect_error(kBase, {"bad.toml (set on the command line)", "collisions.default.e = 3", "[0, 1]"}, {"collisions.default.e=3"});
+  expect_error(kBase, {"unknown key 'time.ennd'", "did you mean 'time.end'"}, {"time.ennd=1"});
+  expect_error(kBase, {"--set time.end", "expected key=value"}, {"time.end"});
+  expect_error(kBase, {"'time.end' is a value, not a table"}, {"time.end.x=1"});
+  expect_error(kBase, {"no entry named \"sand\""}, {"species.sand.diameter=1"});
+}

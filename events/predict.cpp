@@ -101,7 +101,8 @@ inline double pair_contact(const Vec3& position_a, const Vec3& velocity_a, doubl
 }
 }  // namespace
 
-void Simulator::predict(std::int32_t i) {
+void Simulator::predict(std::int32_t i, bool new_trajectory) {
+  if (new_trajectory) crossings_[i] = cell_crossing(i);
   if (has_gravity_)
     predict_with<true>(i);
   else
@@ -111,7 +112,6 @@ void Simulator::predict(std::int32_t i) {
 template <bool kGravity>
 void Simulator::predict_with(std::int32_t i) {
   const auto& counter = system_.particles.event_counter;
-  crossings_[i] = cell_crossing(i);
   Event best;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
     const double t = wall_time(i, system_.walls[w]);

@@ -222,7 +222,7 @@ void Simulator::process_particle_event(std::int32_t i) {
     case EventKind::Pair:
       if (system_.particles.event_counter[event.partner] != event.partner_counter) {
         ++statistics_.invalid_events;
-        predict(i);
+        predict(i, /*new_trajectory=*/false);
         return;
       }
       collide_pair(i, event.partner, event.time);

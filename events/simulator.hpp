@@ -125,7 +125,9 @@ class Simulator {
   }
 
  private:
-  void predict(std::int32_t i);
+  /// Predicts particle i's next collision, and its next cell crossing when its trajectory is
+  /// new (a particle whose predicted partner moved away keeps its crossing).
+  void predict(std::int32_t i, bool new_trajectory = true);
   /// Puts particle i's earlier event (collision or crossing) in the calendar.
   void schedule(std::int32_t i);
   template <bool kGravity>

@@ -21,7 +21,7 @@ std::vector<Wall> box_walls(const Domain& domain) {
   return walls;
 }
 
-void validate_initial_state(const System& system) {
+void validate_initial_state(const System& system, double overlap_tolerance) {
   const ParticleStore& p = system.particles;
   const std::size_t n = p.size();
   auto describe = [&](std::size_t i) {
@@ -36,11 +36,13 @@ void validate_initial_state(const System& system) {
     if (!(p.radius[i] > 0.0) || !(p.mass[i] > 0.0))
       throw std::invalid_argument(describe(i) + " must have positive radius and mass");
     for (int k = 0; k < 3; ++k) {
-      if (p.position[i][k] < system.domain.lower[k] || p.position[i][k] > system.domain.upper[k])
+      // Walled axes: the wall check below is the one that matters (and carries the tolerance).
+      const double slack = system.domain.periodic[k] ? 0.0 : overlap_tolerance * p.radius[i];
+      if (p.position[i][k] < system.domain.lower[k] - slack || p.position[i][k] > system.domain.upper[k] + slack)
         throw std::invalid_argument(describe(i) + " lies outside the domain");
     }
     for (const Wall& wall : system.walls) {
-      if (wall.gap(p.position[i], p.radius[i]) < 0.0)
+      if (wall.gap(p.position[i], p.radius[i]) < -overlap_tolerance * p.radius[i])
         throw std::invalid_argument(describe(i) + " overlaps wall '" + wall.name + "' by " +
                                     std::to_string(-wall.gap(p.position[i], p.radius[i])) + " m");
     }
@@ -55,7 +57,8 @@ void validate_initial_state(const System& system) {
       Vec3 dr = p.position[i] - p.position[j];
       system.domain.minimum_image(dr);
       const double contact = p.radius[i] + p.radius[j];
-      if (dr.squaredNorm() < contact * contact)
+      const double allowed = contact * (1.0 - overlap_tolerance);
+      if (dr.squaredNorm() < allowed * allowed)
         throw std::invalid_argument(describe(i) + " overlaps " + describe(static_cast<std::size_t>(j)) +
                                     " by " + std::to_string(contact - dr.norm()) + " m");
     });

@@ -30,8 +30,18 @@ struct System {
 /// The six planes of the box on every non-periodic axis, named x_low, x_high, y_low, ...
 std::vector<Wall> box_walls(const Domain& domain);
 
+/// Relative round-off the engine tolerates in contacts: a pair may overlap by up to this fraction
+/// of its contact distance, a particle poke through a wall by this fraction of its radius (the
+/// invariant checks of a run use the same bound). States taken from a run (a settled bed, a
+/// snapshot read back) can overlap by ~1e-16 relative, because positions at a common time are
+/// computed from different event times.
+inline constexpr double kContactTolerance = 1e-10;
+
 /// Throws std::invalid_argument (naming the particles) when two particles overlap, a particle
 /// pokes through a wall or lies outside the box, or any state is not finite. O(N) with a grid.
-void validate_initial_state(const System& system);
+/// `overlap_tolerance`: relative overlap accepted (see kContactTolerance); 0 is strict, as used
+/// for freshly placed and listed particles. The default is what the engine accepts mid-run, and
+/// is what the Simulator checks at its start.
+void validate_initial_state(const System& system, double overlap_tolerance = kContactTolerance);
 
 }  // namespace carom

@@ -1,8 +1,11 @@
-// Building a scene's particles: listed ones, then each species' fill, then velocities.
+// Building a scene's particles: listed ones, those read from a file, then each species' fill,
+// then velocities; then, optionally, a settling run.
 #include <cmath>
 
+#include "initial_file.hpp"
 #include "placement.hpp"
 #include "scene.hpp"
+#include "settling.hpp"
 
 namespace carom {
 
@@ -53,15 +56,20 @@ std::vector<std::size_t> fill_counts(const Scene& scene) {
 }
 
 namespace {
-/// Adds "(defined at file:line)" after each listed particle's id in a validation message.
-std::string with_listed_lines(const std::string& message, const Scene& scene) {
+/// Says where particles came from in a validation message: "[[particles]] entry at file:line"
+/// after each listed particle's id, "row k of initial.from_file" after each particle read from
+/// a file (ids [first_from_file, first_from_file + from_file)).
+std::string with_sources(const std::string& message, const Scene& scene, std::size_t first_from_file,
+                         std::size_t from_file) {
   std::string out = message;
-  for (std::size_t i = 0; i < scene.listed.size(); ++i) {
-    const std::string tag = "particle " + std::to_string(i) + " (";
+  auto annotate = [&](std::size_t id, const std::string& source) {
+    const std::string tag = "particle " + std::to_string(id) + " (";
     const std::size_t at = out.find(tag);
-    if (at != std::string::npos)
-      out.insert(at + tag.size(), "[[particles]] entry at " + scene.listed[i].where + ", ");
-  }
+    if (at != std::string::npos) out.insert(at + tag.size(), source + ", ");
+  };
+  for (std::size_t i = 0; i < scene.listed.size(); ++i) annotate(i, "[[particles]] entry at " + scene.listed[i].where);
+  for (std::size_t k = 0; k < from_file; ++k)
+    annotate(first_from_file + k, "row " + std::to_string(k) + " of initial.from_file (" + scene.from_file->where + ")");
   return out;
 }
 }  // namespace
@@ -72,10 +80,16 @@ void build_initial_state(Scene& scene) {
   const std::vector<std::size_t> counts = fill_counts(scene);
   std::vector<double> radii;
   for (const ListedParticle& p : scene.listed) radii.push_back(system.species[p.species].radius());
+  std::vector<FileParticle> from_file;
+  if (scene.from_file) from_file = read_initial_file(scene);
+  for (const FileParticle& p : from_file) radii.push_back(system.species[p.species].radius());
   for (std::size_t s = 0; s < counts.size(); ++s) radii.insert(radii.end(), counts[s], system.species[s].radius());
 
   // Listed particles go in as written; validate_initial_state names any overlap.
   for (const ListedParticle& p : scene.listed) system.add_particle(p.species, p.position, p.velocity, p.spin);
+  // Particles from a file keep their velocities and spins; fills are placed around them.
+  const std::size_t first_from_file = system.particles.size();
+  for (const FileParticle& p : from_file) system.add_particle(p.species, p.position, p.velocity, p.spin);
   const std::size_t first_filled = system.particles.size();
   if (first_filled < radii.size()) {
     std::optional<Placer> placer;
@@ -108,10 +122,20 @@ void build_initial_state(Scene& scene) {
     }
     set_maxwellian(system, first_filled, scene.temperature, scene.rms_velocity, rng);
   }
+  // Placed and listed particles must not touch at all; a state read from a run may overlap by
+  // round-off, which the engine itself tolerates (kContactTolerance).
+  const double tolerance = from_file.empty() ? 0.0 : kContactTolerance;
   try {
-    validate_initial_state(system);
+    validate_initial_state(system, tolerance);
   } catch (const std::invalid_argument& e) {
-    throw SceneError(scene.file + ": initial state: " + with_listed_lines(e.what(), scene));
+    throw SceneError(scene.file + ": initial state: " + with_sources(e.what(), scene, first_from_file, from_file.size()));
+  }
+  if (scene.settle_time <= 0.0) return;
+  settle(scene);
+  try {
+    validate_initial_state(system, kContactTolerance);
+  } catch (const std::invalid_argument& e) {  // an engine invariant broken: report it plainly
+    throw SceneError(scene.settle_where + ": initial.settle_time: the settled state is not valid: " + e.what());
   }
 }
 

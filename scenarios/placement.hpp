@@ -6,7 +6,8 @@
 /// accepted only where it overlaps no placed sphere and no wall, and lies in its region:
 /// wholly inside on walled axes, centre inside on a periodic axis the region spans entirely.
 ///
-/// TODO: reading positions from an HDF5 file (a previous run's snapshot) is not implemented.
+/// Particles read from a previous run (initial.from_file) are in initial_file.hpp, the settling
+/// run (initial.settle_time) in settling.hpp.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -203,7 +203,7 @@ def plot_snapshot(run, path, index, axes, slab):
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     what = (f"slab $|{'xyz'[depth_axis]} - {middle:.3g}| \\leq {0.5 * slab:.3g}$ m"
             if slab > 0 else "all particles")
-    ax.set_title(f"$t$ = {snapshot.attrs['time']:.4g} s, {len(r)} of {len(radius)} particles "
+    ax.set_title(f"$t$ = {snapshot.attrs['time']:.4g} s: {len(r)} of {len(radius)} particles\n"
                  f"({what})", fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
@@ -215,8 +215,9 @@ def main(argv=None):
     parser.add_argument("run", help="the run's HDF5 file")
     parser.add_argument("--out", help="directory for the PNGs (default: beside the run file)")
     parser.add_argument("--snapshot", type=int, default=-1, help="snapshot index (default: last)")
-    parser.add_argument("--axes", default="xy", choices=["xy", "xz", "yz", "yx", "zx", "zy"],
-                        help="projection plane of the snapshot picture (default xy)")
+    parser.add_argument("--axes", default=None, choices=["xy", "xz", "yz", "yx", "zx", "zy"],
+                        help="projection plane of the snapshot picture (default: a side view "
+                             "with gravity pointing down, or xy without gravity)")
     parser.add_argument("--slab", type=float, default=None,
                         help="thickness (m) of the slab drawn around the mid-plane; 0 draws all "
                              "particles (default: 2 largest diameters)")
@@ -228,6 +229,14 @@ def main(argv=None):
     with h5py.File(args.run, "r") as run:
         if text(run.attrs.get("kind", b"")) != "carom run":
             sys.exit(f"{args.run}: not a carom run file")
+        if args.axes is None:
+            gravity = np.asarray(run["domain/gravity"][()]) if "domain/gravity" in run else np.zeros(3)
+            if np.any(gravity != 0):
+                down = int(np.argmax(np.abs(gravity)))  # vertical axis of the picture
+                across = 0 if down != 0 else 1
+                args.axes = "xyz"[across] + "xyz"[down]
+            else:
+                args.axes = "xy"
         written = []
         for name, draw in [("energies", lambda p: plot_energies(run, p)),
                            ("collision_rates", lambda p: plot_collision_rates(run, p)),

@@ -21,8 +21,8 @@ namespace {
 
 volatile std::sig_atomic_t g_stop = 0;
 
-/// First signal: ask the loop to checkpoint and stop after the current chunk. Second signal (the
-/// chunk does not end, or the user insists): leave at once, without a checkpoint.
+/// First signal: ask the run to stop (run_until checks the flag every few thousand events), write a
+/// checkpoint and exit. Second signal (the user insists): leave at once, without a checkpoint.
 extern "C" void on_stop_signal(int) {
   if (g_stop) {
     static const char message[] = "\ncarom: second interrupt: stopping without a checkpoint\n";
@@ -102,6 +102,9 @@ int run_loop(Simulator& sim, RunFile& file, const Scene& scene, const RunInfo& i
     write_text_atomically(summary_path, summary_json(sim, scene, stretch));
   };
 
+  // A signal also stops run_until itself within a few thousand events, so even a chunk that
+  // takes long (a dense, slow phase) is interrupted promptly, at a consistent state.
+  sim.set_stop_flag(&g_stop);
   try {
     while (sim.time() < end_time) {
       const double target = std::min({end_time, sim.time() + chunk, snapshots.next(), samples.next(), checkpoints.next()});

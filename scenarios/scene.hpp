@@ -46,6 +46,15 @@ struct ListedParticle {
   std::string where;             ///< "file:line".
 };
 
+/// `[initial] from_file`: particles taken from a carom run file's snapshot or a checkpoint.
+struct InitialFile {
+  std::string path;            ///< As resolved (relative paths: relative to the scene file's folder).
+  std::string written;         ///< As written in the scene, for messages.
+  std::int64_t snapshot = -1;  ///< Run files: snapshot index, 0 first, -1 last, -2 the one before ...
+  bool snapshot_given = false; ///< A checkpoint has no snapshots: giving one is an error.
+  std::string where;           ///< "file:line" of from_file, for messages.
+};
+
 /// When outputs are written (s of simulated time); 0 means never (except at the end).
 struct OutputSchedule {
   double snapshot_every = 0;
@@ -66,6 +75,10 @@ struct Scene {
   double temperature = 0;     ///< Granular temperature of filled particles, J (T = m <v_x^2>).
   double rms_velocity = 0;    ///< Alternative: rms velocity of filled particles, m/s.
   std::uint64_t seed = 1;     ///< Placement and velocity seed.
+  std::optional<InitialFile> from_file;  ///< Particles read from an HDF5 file, placed after the listed ones.
+  double settle_time = 0;     ///< Settling run before t = 0 (gravity, walls, laws, collapse settings), s; 0: none.
+  bool settle_zero_velocity = false;  ///< Zero velocities and spins after settling.
+  std::string settle_where;   ///< "file:line" of initial.settle_time, for messages.
   double end_time = 0;        ///< s.
   OutputSchedule output;
 };
@@ -79,9 +92,10 @@ Scene parse_scene(const std::string& text, const std::string& file,
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
                  std::optional<std::uint64_t> seed = std::nullopt);
 
-/// Places every particle (listed ones first, then the fills in species order), gives the filled
-/// ones their velocities and validates the result (no overlaps, nothing outside the walls).
-/// Throws SceneError.
+/// Places every particle (listed ones first, then those of initial.from_file, then the fills in
+/// species order), gives the filled ones their velocities, validates the result (no overlaps,
+/// nothing outside the walls) and, with initial.settle_time, runs the settling and takes its end
+/// state as the initial state at t = 0. Throws SceneError.
 void build_initial_state(Scene& scene);
 
 /// Number of particles each fill will create (mass fractions resolved), per species.

@@ -65,6 +65,11 @@ class TableReader {
   std::string where(const toml::node& node) const;
   /// "file:line" of this table.
   std::string where() const;
+  /// "file:line" of a key's value (of this table when the key is absent).
+  std::string where_key(std::string_view key) const {
+    const toml::node* n = table_->get(key);
+    return n != nullptr ? where(*n) : where();
+  }
 
   /// True when the key is present (and records it as known).
   bool has(std::string_view key);

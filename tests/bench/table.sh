@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Makes the README's benchmark table: elastic hard-sphere fluid, collisions per second.
 #   tests/bench/table.sh [path/to/carom_bench] > table.md
-# Each case starts from a lattice (monodisperse) or random insertion (mixtures), runs 5
-# collisions per particle to equilibrate and measures the next 20 (10 for N = 1e6).
+# Each case starts from a lattice (monodisperse) or random insertion (mixtures), runs 10
+# collisions per particle to equilibrate (150 at phi >= 0.4, where the lattice melts slowly)
+# and measures the next 20 (10 for N = 1e6).
 set -euo pipefail
 bench=${1:-build/release/tests/bench/carom_bench}
 printf '| case | N | phi | collisions/s | P d^3/kT (Enskog) | rate per particle (Enskog) |\n'

@@ -14,7 +14,8 @@ namespace {
 /// cubes of the level's diameter / subdivision; particles as uniformly spread.
 double prediction_cost(const Domain& domain, const std::vector<double>& sizes,
                        const std::vector<double>& counts, const std::vector<int>& level_of_size,
-                       int levels, int subdivision) {
+                       const std::vector<int>& reach) {
+  const int levels = static_cast<int>(reach.size());
   const double volume = domain.volume();
   std::vector<double> cell(levels, 0.0), density(levels, 0.0), max_diameter(levels, 0.0);
   double total_cells = 0.0;
@@ -24,17 +25,18 @@ double prediction_cost(const Domain& domain, const std::vector<double>& sizes,
     density[l] += counts[s] / volume;
   }
   for (int l = 0; l < levels; ++l) {
-    cell[l] = max_diameter[l] / subdivision;
+    cell[l] = max_diameter[l] / reach[l];
     total_cells += volume / (cell[l] * cell[l] * cell[l]);
   }
   double particles = 0.0;
   for (double c : counts) particles += c;
-  if (total_cells > 8.0 * particles + 1e6) return std::numeric_limits<double>::infinity();
+  // Memory: 4 bytes a cell; allow up to 32 cells a particle plus 40 MB.
+  if (total_cells > 32.0 * particles + 1e7) return std::numeric_limits<double>::infinity();
   double cost = 0.0;
   for (std::size_t s = 0; s < sizes.size(); ++s) {
     const int own = level_of_size[s];
     for (int l = 0; l < levels; ++l) {
-      const double span = l == own ? 2 * subdivision + 1
+      const double span = l == own ? 2 * reach[l] + 1
                                    : (cell[own] + sizes[s] + max_diameter[l]) / cell[l] + 1.0;
       const double cells = span * span * span;
       cost += counts[s] * cells * (1.0 + cell[l] * cell[l] * cell[l] * density[l]);
@@ -44,12 +46,15 @@ double prediction_cost(const Domain& domain, const std::vector<double>& sizes,
 }
 }  // namespace
 
-std::vector<double> HierarchicalGrid::cheapest_levels(const Domain& domain, const std::vector<double>& sizes,
-                                                      const std::vector<double>& counts, int subdivision) {
-  // Every split of the sorted sizes into consecutive groups (2^(k-1) of them, k <= 12).
+HierarchicalGrid::LevelPlan HierarchicalGrid::cheapest_levels(const Domain& domain,
+                                                               const std::vector<double>& sizes,
+                                                               const std::vector<double>& counts,
+                                                               int subdivision) {
+  // Every split of the sorted sizes into consecutive groups (2^(k-1) of them, k <= 12), and
+  // with subdivision 0 every cells-per-diameter 1..3 of each level (up to 4 levels).
   const std::size_t k = sizes.size();
   double best_cost = std::numeric_limits<double>::infinity();
-  std::vector<double> best{sizes.front()};
+  LevelPlan best{{sizes.front()}, {std::max(subdivision, 1)}};
   for (std::uint32_t mask = 0; mask < (1u << (k - 1)); ++mask) {
     std::vector<int> level_of_size(k, 0);
     std::vector<double> nominal{sizes[0]};
@@ -58,11 +63,21 @@ std::vector<double> HierarchicalGrid::cheapest_levels(const Domain& domain, cons
       if (split) nominal.push_back(sizes[s]);
       level_of_size[s] = static_cast<int>(nominal.size()) - 1;
     }
-    const double cost = prediction_cost(domain, sizes, counts, level_of_size,
-                                        static_cast<int>(nominal.size()), subdivision);
-    if (cost < best_cost * (1.0 - 1e-9)) {
-      best_cost = cost;
-      best = nominal;
+    const int levels = static_cast<int>(nominal.size());
+    const bool search_reach = subdivision == 0 && levels <= 4;
+    int combinations = 1;
+    if (search_reach)
+      for (int l = 0; l < levels; ++l) combinations *= kMaxSubdivision;
+    for (int code = 0; code < combinations; ++code) {
+      std::vector<int> reach(levels, std::max(subdivision, 1));
+      if (search_reach)
+        for (int l = 0, rest = code; l < levels; ++l, rest /= kMaxSubdivision)
+          reach[l] = 1 + rest % kMaxSubdivision;
+      const double cost = prediction_cost(domain, sizes, counts, level_of_size, reach);
+      if (cost < best_cost * (1.0 - 1e-9)) {
+        best_cost = cost;
+        best = LevelPlan{nominal, reach};
+      }
     }
   }
   return best;
@@ -70,9 +85,10 @@ std::vector<double> HierarchicalGrid::cheapest_levels(const Domain& domain, cons
 
 HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<double>& radius,
                                    double level_ratio, int subdivision)
-    : domain_(domain), reach_(subdivision) {
-  if (subdivision < 1 || subdivision > kMaxSubdivision)
-    throw std::invalid_argument("grid subdivision must be between 1 and " + std::to_string(kMaxSubdivision));
+    : domain_(domain) {
+  if (subdivision < 0 || subdivision > kMaxSubdivision)
+    throw std::invalid_argument("grid subdivision must be between 0 (automatic) and " +
+                                std::to_string(kMaxSubdivision));
   std::vector<double> diameters;
   for (double a : radius) diameters.push_back(2.0 * a);
   std::sort(diameters.begin(), diameters.end(), std::greater<>());
@@ -89,23 +105,36 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
     sizes.push_back(domain.length().minCoeff() / 3.0);
     counts.push_back(0.0);
   }
+  std::vector<int> level_reach;
   if (level_ratio < 0.0 && sizes.size() <= 12) {
-    level_diameter_ = cheapest_levels(domain, sizes, counts, subdivision);
+    LevelPlan plan = cheapest_levels(domain, sizes, counts, subdivision);
+    level_diameter_ = std::move(plan.diameters);
+    level_reach = std::move(plan.reach);
   } else {
     // Largest first; a size below level_ratio times the current level's starts a new level.
     for (double d : sizes)
       if (level_diameter_.empty() || d < level_ratio * level_diameter_.back()) level_diameter_.push_back(d);
+    level_reach.assign(level_diameter_.size(), std::max(subdivision, 1));
   }
   const Vec3 length = domain.length();
-  for (double d : level_diameter_) {
+  for (std::size_t l = 0; l < level_diameter_.size(); ++l) {
+    const double d = level_diameter_[l];
     Level grid;
+    // A periodic axis needs 2m + 2 cells: with fewer, the cells at the two ends are neighbours
+    // both directly and through the boundary, and the nearest image at the time of a prediction
+    // need not be the one that touches. A box too short for m cells per diameter gets fewer.
+    int m = level_reach[l];
+    auto fits = [&](int reach) {
+      for (int k = 0; k < 3; ++k)
+        if (domain.periodic[k] && std::floor(length[k] * reach / d) < 2 * reach + 2) return false;
+      return true;
+    };
+    while (m > 1 && !fits(m)) --m;
+    grid.reach = m;
     for (int k = 0; k < 3; ++k) {
-      int n = static_cast<int>(std::floor(length[k] * subdivision / d));
+      int n = static_cast<int>(std::floor(length[k] * m / d));
       n = std::clamp(n, 1, 1 << 20);
-      // A periodic axis needs 4 cells (2m + 2): with 3, the two cells at the ends are
-      // neighbours both directly and through the boundary, and the nearest image at the time
-      // of a prediction need not be the one that touches.
-      if (domain.periodic[k] && n < 2 * subdivision + 2)
+      if (domain.periodic[k] && n < 2 * m + 2)
         throw std::invalid_argument(
             "periodic axis " + std::string(1, "xyz"[k]) + " is " + std::to_string(length[k]) +
             " m long; it must be at least 4 particle diameters (" + std::to_string(4 * d) + " m)");
@@ -117,9 +146,9 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
       throw std::invalid_argument("the cell grid for diameter " + std::to_string(d) + " m needs " +
                                   std::to_string(total) + " cells; the domain is too large");
     grid.head.assign(static_cast<std::size_t>(total), -1);
-    for (int dz = -reach_; dz <= reach_; ++dz)
-      for (int dy = -reach_; dy <= reach_; ++dy)
-        for (int dx = -reach_; dx <= reach_; ++dx)
+    for (int dz = -m; dz <= m; ++dz)
+      for (int dy = -m; dy <= m; ++dy)
+        for (int dx = -m; dx <= m; ++dx)
           grid.block_offsets.push_back(dx + grid.cells[0] * (dy + grid.cells[1] * dz));
     levels_.push_back(std::move(grid));
   }
@@ -196,7 +225,7 @@ int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapp
   const auto& n = levels_[level].cells;
   const auto& c = coords_[i];
   wrapped = false;
-  const int m = reach_;
+  const int m = levels_[level].reach;
   if (c[0] >= m && c[0] + m < n[0] && c[1] >= m && c[1] + m < n[1] && c[2] >= m && c[2] + m < n[2]) {
     // Interior cell: fixed offsets, no wrapping.
     const std::int32_t centre = flat_index(level, c);
@@ -233,7 +262,7 @@ int HierarchicalGrid::own_slab(std::int32_t i, int axis, int direction, std::int
   const int level = level_[i];
   const auto& n = levels_[level].cells;
   const auto& c = coords_[i];
-  const int m = reach_;
+  const int m = levels_[level].reach;
   wrapped = false;
   int index[3][2 * kMaxSubdivision + 1], count[3];
   for (int k = 0; k < 3; ++k) {

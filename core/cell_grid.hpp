@@ -26,7 +26,8 @@ class HierarchicalGrid {
     Vec3 cell_size = Vec3::Ones();      ///< Cell edge per axis, m (>= the largest diameter).
     double max_radius = 0;              ///< Largest particle radius in this level, m.
     std::vector<std::int32_t> head;     ///< First particle of each cell's list, or -1.
-    std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the 27 cells around a cell.
+    std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the block around a cell.
+    int reach = 1;                      ///< Cells per diameter m: the block is (2m+1)^3 cells.
   };
 
   HierarchicalGrid() = default;
@@ -37,13 +38,19 @@ class HierarchicalGrid {
   /// puts every particle in one grid. Throws std::invalid_argument when a periodic axis is
   /// shorter than three cells.
   /// `subdivision` m cuts each level's cells to 1/m of its largest diameter; the own-level
-  /// search block is then (2m+1)^3 cells.
+  /// search block is then (2m+1)^3 cells. subdivision = 0 lets the cost model choose m per
+  /// level (large particles among fines search fewer fine cells with smaller own cells).
   HierarchicalGrid(const Domain& domain, const std::vector<double>& radius, double level_ratio = -1.0,
                    int subdivision = 1);
-  /// The nominal diameters of the cheapest levels for distinct `sizes` (largest first) with
-  /// `counts` particles each (see the constructor).
-  static std::vector<double> cheapest_levels(const Domain& domain, const std::vector<double>& sizes,
-                                             const std::vector<double>& counts, int subdivision);
+  /// Levels as planned: nominal (largest) diameter and cells per diameter of each.
+  struct LevelPlan {
+    std::vector<double> diameters;
+    std::vector<int> reach;
+  };
+  /// The cheapest levels for distinct `sizes` (largest first) with `counts` particles each
+  /// (see the constructor).
+  static LevelPlan cheapest_levels(const Domain& domain, const std::vector<double>& sizes,
+                                   const std::vector<double>& counts, int subdivision);
   /// Largest supported subdivision.
   static constexpr int kMaxSubdivision = 3;
   /// Largest number of cells in an own-level block.
@@ -147,7 +154,6 @@ class HierarchicalGrid {
   AxisRange covering(int level, int k, double lo, double hi) const;
 
   Domain domain_;
-  int reach_ = 1;  ///< Own-level block half-width in cells (the subdivision).
   std::vector<Level> levels_;
   std::vector<double> level_diameter_;  ///< Nominal (largest) diameter of each level, m.
   std::vector<std::int32_t> next_, prev_;
@@ -166,7 +172,7 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
     if (level == own) {
       // The 3x3x3 block: the cell is wider than any contact distance within the level.
       for (int k = 0; k < 3; ++k)
-        range[k] = clip(level, k, coords_[i][k] - reach_, coords_[i][k] + reach_);
+        range[k] = clip(level, k, coords_[i][k] - grid.reach, coords_[i][k] + grid.reach);
     } else {
       const Vec3 lower = cell_lower(i), upper = cell_upper(i);
       const double reach = radius_i + grid.max_radius;

@@ -22,8 +22,9 @@ struct SimulatorOptions {
   /// the level above; 0 puts everything in one grid.
   double grid_level_ratio = -1.0;
   /// Grid cells per largest diameter of a level (1..3): smaller cells mean fewer candidate
-  /// partners per prediction but more cell crossings.
-  int grid_subdivision = 1;
+  /// partners per prediction but more cell crossings and cell visits. 0 (default): chosen per
+  /// level by the grid's cost model (1 for a monodisperse system).
+  int grid_subdivision = 0;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.
 #ifdef NDEBUG

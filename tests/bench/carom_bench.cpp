@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
   app.add_option("--measure", measure, "collisions per particle measured");
   app.add_option("--grid-ratio", level_ratio, "grid levels: < 0 cheapest (default), 0 one grid, > 0 size ratio that starts a level");
   app.add_option("--seed", spec.seed, "random seed");
-  int subdivision = 1;
-  app.add_option("--subdivision", subdivision, "grid cells per diameter (1..3)");
+  int subdivision = 0;
+  app.add_option("--subdivision", subdivision, "grid cells per diameter (1..3; 0: chosen per level)");
   CLI11_PARSE(app, argc, argv);
 
   if (equilibrate < 0.0) equilibrate = spec.volume_fraction >= 0.4 ? 150.0 : 10.0;
@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
   const double volume = sim.system().domain.volume();
   std::printf("particles=%zu species=%zu grid_levels=%zu box=%.4g\n", n, sim.system().species.size(),
               sim.grid().levels().size(), sim.system().domain.length().x());
+  for (const auto& level : sim.grid().levels())
+    std::printf("  level: %d x %d x %d cells of %.4g, %d per diameter\n", level.cells[0], level.cells[1],
+                level.cells[2], level.cell_size.x(), level.reach);
 
   // Time for one collision per particle, estimated from Enskog for the large species.
   const double number_density = n / volume, phi = spec.volume_fraction;

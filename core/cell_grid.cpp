@@ -234,11 +234,19 @@ int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapp
     for (int k = 0; k < count; ++k) cells[k] = centre + offsets[k];
     return count;
   }
-  // Boundary cell: per axis, the neighbours that exist (walled) or wrap (periodic, n >= 3).
+  // Boundary cell: per axis, the neighbours that exist (walled) or wrap (periodic).
+  const int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
+  return block_cells(level, c, from, to, cells, wrapped);
+}
+
+int HierarchicalGrid::block_cells(int level, const std::array<int, 3>& c, const int (&from)[3],
+                                  const int (&to)[3], std::int32_t* cells, bool& wrapped) const {
+  const auto& n = levels_[level].cells;
+  wrapped = false;
   int index[3][2 * kMaxSubdivision + 1], count[3];
   for (int k = 0; k < 3; ++k) {
     count[k] = 0;
-    for (int d = -m; d <= m; ++d) {
+    for (int d = from[k]; d <= to[k]; ++d) {
       int idx = c[k] + d;
       if (idx < 0 || idx >= n[k]) {
         if (!domain_.periodic[k]) continue;
@@ -260,32 +268,10 @@ int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapp
 int HierarchicalGrid::own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells,
                                bool& wrapped) const {
   const int level = level_[i];
-  const auto& n = levels_[level].cells;
-  const auto& c = coords_[i];
   const int m = levels_[level].reach;
-  wrapped = false;
-  int index[3][2 * kMaxSubdivision + 1], count[3];
-  for (int k = 0; k < 3; ++k) {
-    count[k] = 0;
-    const int from = k == axis ? direction * m : -m;
-    const int to = k == axis ? direction * m : m;
-    for (int d = from; d <= to; ++d) {
-      int idx = c[k] + d;
-      if (idx < 0 || idx >= n[k]) {
-        if (!domain_.periodic[k]) continue;
-        idx += idx < 0 ? n[k] : -n[k];
-        wrapped = true;
-      }
-      index[k][count[k]++] = idx;
-    }
-  }
-  int total = 0;
-  for (int a = 0; a < count[2]; ++a)
-    for (int b = 0; b < count[1]; ++b) {
-      const int row = n[0] * (index[1][b] + n[1] * index[2][a]);
-      for (int d = 0; d < count[0]; ++d) cells[total++] = index[0][d] + row;
-    }
-  return total;
+  int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
+  from[axis] = to[axis] = direction * m;
+  return block_cells(level, coords_[i], from, to, cells, wrapped);
 }
 
 HierarchicalGrid::AxisRange HierarchicalGrid::clip(int level, int k, int first, int last) const {

@@ -137,6 +137,10 @@ class HierarchicalGrid {
   void unlink(std::int32_t i);
   template <class Visit>
   void for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own, Visit&& visit) const;
+  /// Flat indices of the cells at offsets [from, to] (per axis) around cell c of `level`,
+  /// clipped on walled axes and wrapped on periodic ones (then `wrapped` is set).
+  int block_cells(int level, const std::array<int, 3>& c, const int (&from)[3], const int (&to)[3],
+                  std::int32_t* cells, bool& wrapped) const;
   /// A run of consecutive cell indices along one axis, wrapped on periodic axes.
   struct AxisRange {
     int first = 0;   ///< First index (may be negative or past the end before wrapping).

@@ -117,39 +117,21 @@ void Simulator::predict_with(std::int32_t i) {
     const double t = wall_time(i, system_.walls[w]);
     if (t < best.time) best = Event{t, static_cast<std::int32_t>(w), 0, EventKind::Wall};
   }
-  const HotState& a = hot_[i];
-  const Vec3 position = a.position, velocity = a.velocity;
-  const double clock = a.clock, radius = a.radius;
-  const Vec3& gravity = system_.flight.gravity;
-  const Domain& domain = system_.domain;
-  const HotState* hot = hot_.data();
-
-  // Own level: the 3x3x3 block, without periodic images unless it wraps.
+  // Own level: the block around i's cell, without periodic images unless it wraps.
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;
   const int count = grid_.own_block(i, cells, wrapped);
-  const int level = grid_.level_of(i);
-  const std::int32_t* next = grid_.next_array();
   double best_pair_time = best.time;
-  std::int32_t best_partner = -1;
-  for (int c = 0; c < count; ++c) {
-    for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) {
-      if (j == i) continue;
-      const HotState& b = hot[j];
-      const double t =
-          wrapped ? pair_contact<kGravity, true>(position, velocity, clock, radius, b.position,
-                                                 b.velocity, b.clock, b.radius, gravity, domain)
-                  : pair_contact<kGravity, false>(position, velocity, clock, radius, b.position,
-                                                  b.velocity, b.clock, b.radius, gravity, domain);
-      if (t < best_pair_time) {
-        best_pair_time = t;
-        best_partner = j;
-      }
-    }
-  }
+  const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0) best = Event{best_pair_time, best_partner, counter[best_partner], EventKind::Pair};
   // Other levels (polydisperse systems).
   if (grid_.levels().size() > 1) {
+    const HotState& a = hot_[i];
+    const Vec3 position = a.position, velocity = a.velocity;
+    const double clock = a.clock, radius = a.radius;
+    const Vec3& gravity = system_.flight.gravity;
+    const Domain& domain = system_.domain;
+    const HotState* hot = hot_.data();
     grid_.for_each_candidate_on_other_levels(i, radius, [&](std::int32_t j) {
       const HotState& b = hot[j];
       const double t = pair_contact<kGravity, true>(position, velocity, clock, radius, b.position,
@@ -169,20 +151,16 @@ void Simulator::schedule(std::int32_t i) {
 }
 
 template <bool kGravity>
-void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) {
-  crossings_[i] = cell_crossing(i);
+std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
+                                   double& best_time) const {
   const HotState& a = hot_[i];
   const Vec3 position = a.position, velocity = a.velocity;
   const double clock = a.clock, radius = a.radius;
   const Vec3& gravity = system_.flight.gravity;
   const Domain& domain = system_.domain;
   const HotState* hot = hot_.data();
-  std::int32_t cells[HierarchicalGrid::kMaxBlock];
-  bool wrapped = false;
-  const int count = grid_.own_slab(i, axis, direction, cells, wrapped);
   const int level = grid_.level_of(i);
   const std::int32_t* next = grid_.next_array();
-  double best_pair_time = events_[i].time;
   std::int32_t best_partner = -1;
   for (int c = 0; c < count; ++c) {
     for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) {
@@ -193,12 +171,23 @@ void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) 
                                                  b.velocity, b.clock, b.radius, gravity, domain)
                   : pair_contact<kGravity, false>(position, velocity, clock, radius, b.position,
                                                   b.velocity, b.clock, b.radius, gravity, domain);
-      if (t < best_pair_time) {
-        best_pair_time = t;
+      if (t < best_time) {
+        best_time = t;
         best_partner = j;
       }
     }
   }
+  return best_partner;
+}
+
+template <bool kGravity>
+void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) {
+  crossings_[i] = cell_crossing(i);
+  std::int32_t cells[HierarchicalGrid::kMaxBlock];
+  bool wrapped = false;
+  const int count = grid_.own_slab(i, axis, direction, cells, wrapped);
+  double best_pair_time = events_[i].time;
+  const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
     events_[i] = Event{best_pair_time, best_partner, system_.particles.event_counter[best_partner],
                        EventKind::Pair};

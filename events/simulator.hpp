@@ -136,6 +136,11 @@ class Simulator {
   double pair_time(std::int32_t i, std::int32_t j) const;
   double wall_time(std::int32_t i, const Wall& wall) const;
   Event cell_crossing(std::int32_t i) const;
+  /// Earliest contact of i with the particles of the given cells of its own level, if earlier
+  /// than best_time (updated); returns the partner or -1.
+  template <bool kGravity>
+  std::int32_t scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
+                          double& best_time) const;
   /// After a crossing, looks for partners only in the cells that just came into reach.
   template <bool kGravity>
   void predict_after_crossing(std::int32_t i, int axis, int direction);

@@ -6,25 +6,6 @@
 
 namespace carom {
 
-double Simulator::pair_time(std::int32_t i, std::int32_t j) const {
-  const HotState& a = hot_[i];
-  const HotState& b = hot_[j];
-  // Both states are taken to the later of the two clocks: the result depends only on the
-  // stored states (not on when the prediction is made), and is symmetric in i and j.
-  const double t_ref = std::max(a.clock, b.clock);
-  const double dt_i = t_ref - a.clock, dt_j = t_ref - b.clock;
-  Vec3 dr = a.position - b.position + dt_i * a.velocity - dt_j * b.velocity;
-  Vec3 dv = a.velocity - b.velocity;
-  if (has_gravity_) {
-    const Vec3& g = system_.flight.gravity;
-    dr += (0.5 * (dt_i * dt_i - dt_j * dt_j)) * g;
-    dv += (dt_i - dt_j) * g;
-  }
-  system_.domain.minimum_image(dr);
-  const double s = sphere_contact_time(dr, dv, a.radius + b.radius);
-  return t_ref + s;
-}
-
 double Simulator::wall_time(std::int32_t i, const Wall& wall) const {
   const HotState& p = hot_[i];
   const Vec3& r = p.position;
@@ -101,6 +82,15 @@ inline double pair_contact(const Vec3& position_a, const Vec3& velocity_a, doubl
 }
 }  // namespace
 
+template <bool kGravity>
+double Simulator::pair_time(std::int32_t i, std::int32_t j) const {
+  const HotState& a = hot_[i];
+  const HotState& b = hot_[j];
+  return pair_contact<kGravity, true>(a.position, a.velocity, a.clock, a.radius, b.position,
+                                      b.velocity, b.clock, b.radius, system_.flight.gravity,
+                                      system_.domain);
+}
+
 void Simulator::predict(std::int32_t i, bool new_trajectory) {
   if (new_trajectory) crossings_[i] = cell_crossing(i);
   if (has_gravity_)
@@ -126,16 +116,8 @@ void Simulator::predict_with(std::int32_t i) {
   if (best_partner >= 0) best = Event{best_pair_time, best_partner, counter[best_partner], EventKind::Pair};
   // Other levels (polydisperse systems).
   if (grid_.levels().size() > 1) {
-    const HotState& a = hot_[i];
-    const Vec3 position = a.position, velocity = a.velocity;
-    const double clock = a.clock, radius = a.radius;
-    const Vec3& gravity = system_.flight.gravity;
-    const Domain& domain = system_.domain;
-    const HotState* hot = hot_.data();
-    grid_.for_each_candidate_on_other_levels(i, radius, [&](std::int32_t j) {
-      const HotState& b = hot[j];
-      const double t = pair_contact<kGravity, true>(position, velocity, clock, radius, b.position,
-                                                    b.velocity, b.clock, b.radius, gravity, domain);
+    grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, [&](std::int32_t j) {
+      const double t = pair_time<kGravity>(i, j);
       if (t < best.time) best = Event{t, j, counter[j], EventKind::Pair};
     });
   }

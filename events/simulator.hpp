@@ -133,6 +133,8 @@ class Simulator {
   void schedule(std::int32_t i);
   template <bool kGravity>
   void predict_with(std::int32_t i);
+  /// Contact time of particles i and j (periodic images considered), or kNever.
+  template <bool kGravity>
   double pair_time(std::int32_t i, std::int32_t j) const;
   double wall_time(std::int32_t i, const Wall& wall) const;
   Event cell_crossing(std::int32_t i) const;

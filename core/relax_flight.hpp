@@ -1,0 +1,48 @@
+#pragma once
+/// The `relax` flight model: exact flight under gravity plus a linear drag frozen for one fluid
+/// step (ballistic-plus-drag). See DESIGN.md section 2.
+#include <cmath>
+
+#include "vec3.hpp"
+
+namespace carom {
+
+/// phi1(x) = (1 - e^-x) / x, with phi1(0) = 1. Accurate for every x >= 0 (series near 0).
+inline double relax_phi1(double x) {
+  if (x < 1e-4) return 1.0 - x * (0.5 - x * (1.0 / 6.0 - x / 24.0));
+  return -std::expm1(-x) / x;
+}
+
+/// phi2(x) = (x - 1 + e^-x) / x^2, with phi2(0) = 1/2. Accurate for every x >= 0.
+inline double relax_phi2(double x) {
+  if (x < 1e-3) return 0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x * (1.0 / 120.0 - x / 720.0)));
+  return (x + std::expm1(-x)) / (x * x);
+}
+
+/// A particle's flight inside one fluid step: its acceleration depends linearly on its own
+/// velocity, a(v) = drive - rate v, with the gas velocity u, the drag coefficient K = m rate
+/// and the pressure gradient frozen at the start of the step:
+///   rate  = K / m = 1 / tau                       (1/s; 0: no drag, a ballistic flight),
+///   drive = g + rate u - grad p / rho_p           (m/s^2),
+/// so the velocity relaxes exponentially towards the asymptotic (terminal) velocity
+/// w = drive / rate. With a0 = a(v0) the initial acceleration:
+///   v(s) = v0 + a0 s phi1(rate s),   r(s) = r0 + v0 s + a0 s^2 phi2(rate s).
+/// This form is exact for rate = 0 too (then it is the ballistic parabola), and has no
+/// cancellation for small rate s.
+struct RelaxFlight {
+  double rate = 0.0;            ///< 1/tau, 1/s.
+  Vec3 drive = Vec3::Zero();    ///< drive, m/s^2.
+
+  /// The acceleration at velocity v, m/s^2.
+  Vec3 acceleration(const Vec3& v) const { return drive - rate * v; }
+  /// Velocity after a flight of s seconds from velocity v0, m/s.
+  Vec3 velocity(const Vec3& v0, double s) const {
+    return v0 + (s * relax_phi1(rate * s)) * acceleration(v0);
+  }
+  /// Displacement after a flight of s seconds from velocity v0, m.
+  Vec3 displacement(const Vec3& v0, double s) const {
+    return s * v0 + (s * s * relax_phi2(rate * s)) * acceleration(v0);
+  }
+};
+
+}  // namespace carom

@@ -1,0 +1,1 @@
+// porosity: to be written

@@ -9,6 +9,9 @@ struct Species {
   std::string name;      ///< Label used in scenes and outputs.
   double diameter = 0;   ///< Sphere diameter d, m.
   double density = 0;    ///< Solid density rho_p, kg/m^3.
+  /// Fixed particles never move: obstacles, the packing of a fixed bed. They collide as bodies
+  /// of infinite mass and feel no force (the gas still feels their drag).
+  bool fixed = false;
 
   /// Radius a = d/2, m.
   double radius() const { return 0.5 * diameter; }

@@ -38,10 +38,14 @@ void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
   const std::uint32_t si = p.species[i], sj = p.species[j];
   const ContactLaw law = effective_law(system_.materials.pair(si, sj),
                                        (p.velocity[i] - p.velocity[j]).dot(n), t, i, j);
-  const CollisionOutcome outcome =
-      collide(law, n, ContactBody{p.velocity[i], p.spin[i], 1.0 / p.mass[i], p.radius[i], 1.0 / p.inertia[i]},
-              ContactBody{p.velocity[j], p.spin[j], 1.0 / p.mass[j], p.radius[j], 1.0 / p.inertia[j]});
-  if (options_.check_invariants) check_pair_invariants(i, j, momentum_before);
+  const bool fixed_i = system_.species[si].fixed, fixed_j = system_.species[sj].fixed;
+  const CollisionOutcome outcome = collide(
+      law, n,
+      ContactBody{p.velocity[i], p.spin[i], fixed_i ? 0.0 : 1.0 / p.mass[i], p.radius[i],
+                  fixed_i ? 0.0 : 1.0 / p.inertia[i]},
+      ContactBody{p.velocity[j], p.spin[j], fixed_j ? 0.0 : 1.0 / p.mass[j], p.radius[j],
+                  fixed_j ? 0.0 : 1.0 / p.inertia[j]});
+  if (options_.check_invariants && !fixed_i && !fixed_j) check_pair_invariants(i, j, momentum_before);
 
   const std::size_t species = statistics_.species_count;
   ++statistics_.pair_collisions[si * species + sj];
@@ -101,7 +105,7 @@ void Simulator::cross_cell(std::int32_t i, int face) {
   ++statistics_.cell_crossings;
   // Same trajectory: partners' predictions with i stay valid (no counter bump), and so does
   // i's own next collision; only the cells that just came into reach need a look.
-  if (grid_.levels().size() > 1)
+  if (grid_.levels().size() > 1 || relax_)
     predict(i);
   else if (has_gravity_)
     predict_after_crossing<true>(i, axis, direction);

@@ -92,6 +92,10 @@ double Simulator::pair_time(std::int32_t i, std::int32_t j) const {
 }
 
 void Simulator::predict(std::int32_t i, bool new_trajectory) {
+  if (relax_) {
+    predict_relax(i, new_trajectory);
+    return;
+  }
   if (new_trajectory) crossings_[i] = cell_crossing(i);
   if (has_gravity_)
     predict_with<true>(i);

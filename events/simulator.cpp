@@ -25,7 +25,7 @@ std::vector<std::size_t> spatial_order(const System& system) {
   return order;
 }
 
-void validate_system(const System& system) {
+void validate_system(const System& system, FlightModel flight_model) {
   const std::size_t species = system.species.size();
   if (system.materials.species_count() != species || system.materials.wall_count() != system.walls.size())
     throw std::invalid_argument("the material table does not match the species and walls");
@@ -40,6 +40,11 @@ void validate_system(const System& system) {
   for (std::uint32_t s : system.particles.species)
     if (s >= species) throw std::invalid_argument("a particle refers to a species that does not exist");
   const Vec3& g = system.flight.gravity;
+  for (const Species& s : system.species)
+    if (s.fixed && system.flight.has_gravity() && flight_model != FlightModel::Relax)
+      throw std::invalid_argument("species '" + s.name +
+                                  "' is fixed: under gravity that needs relax flights (each "
+                                  "particle its own flight); ballistic flights share one gravity");
   for (const Wall& wall : system.walls)
     if (wall.shape == Wall::Shape::Cylinder && (g.x() != 0.0 || g.y() != 0.0))
       throw std::invalid_argument("wall '" + wall.name +
@@ -50,7 +55,7 @@ void validate_system(const System& system) {
 
 Simulator::Simulator(System system, SimulatorOptions options)
     : system_(std::move(system)), options_(options) {
-  validate_system(system_);
+  validate_system(system_, options_.flight_model);
   ParticleStore& p = system_.particles;
   const std::size_t n = p.size();
   if (n > 0) p.permute(spatial_order(system_));
@@ -58,6 +63,13 @@ Simulator::Simulator(System system, SimulatorOptions options)
   for (std::size_t i = 0; i < n; ++i) grid_.insert(static_cast<std::int32_t>(i), p.position[i]);
   statistics_.resize(system_.species.size(), system_.walls.size());
   has_gravity_ = system_.flight.has_gravity();
+  relax_ = options_.flight_model == FlightModel::Relax;
+  flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
+  for (std::size_t i = 0; i < n; ++i)
+    if (system_.species[p.species[i]].fixed) {
+      p.velocity[i] = p.spin[i] = Vec3::Zero();
+      flights_[i] = RelaxFlight{};
+    }
   events_.assign(n, Event{});
   crossings_.assign(n, Event{});
   end_slot_ = n;
@@ -91,6 +103,10 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
                            options_.grid_subdivision);
   for (std::size_t i = 0; i < n; ++i) grid_.insert_at(static_cast<std::int32_t>(i), state.cells[i]);
   has_gravity_ = system_.flight.has_gravity();
+  relax_ = options_.flight_model == FlightModel::Relax;
+  flights_ = std::move(state.flights);
+  if (flights_.empty()) flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
+  if (flights_.size() != n) throw std::invalid_argument("saved state: flights missing");
   events_ = std::move(state.events);
   crossings_ = std::move(state.crossings);
   if (crossings_.size() != n) throw std::invalid_argument("saved state: crossings missing");
@@ -104,6 +120,7 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   stall_count_ = std::move(state.stall_count);
   stall_window_ = state.stall_window;
   restored_action_times_ = std::move(state.action_times);
+  restored_ = true;
   hot_.resize(n);
   for (std::size_t i = 0; i < n; ++i) refresh_hot(static_cast<std::int32_t>(i));
 }
@@ -116,6 +133,7 @@ EngineState Simulator::state() const {
   for (std::size_t i = 0; i < n; ++i) s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
   s.events = events_;
   s.crossings = crossings_;
+  s.flights = flights_;
   s.time = time_;
   s.last_particle_event = last_particle_event_;
   s.statistics = statistics_;
@@ -131,15 +149,75 @@ void Simulator::add_periodic_action(std::string name, double first_time, double 
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
   for (const auto& [saved_name, saved_time] : restored_action_times_)
     if (saved_name == name) first_time = saved_time;
-  actions_.push_back(PeriodicAction{std::move(name), first_time, interval, std::move(action)});
+  actions_.push_back(PeriodicAction{std::move(name), first_time, interval, std::move(action), {}});
   calendar_.resize(end_slot_ + 1 + actions_.size());
   calendar_.set(end_slot_ + actions_.size(), first_time);
+}
+
+void Simulator::add_synchronising_action(std::string name, double first_time, double interval,
+                                         std::function<void(GlobalStep&)> step) {
+  if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
+  if (!(first_time >= time_))
+    throw std::invalid_argument(name + ": the first step is before the current time");
+  for (const auto& [saved_name, saved_time] : restored_action_times_)
+    if (saved_name == name) first_time = saved_time;
+  actions_.push_back(PeriodicAction{std::move(name), first_time, interval, {}, std::move(step)});
+  calendar_.resize(end_slot_ + 1 + actions_.size());
+  calendar_.set(end_slot_ + actions_.size(), first_time);
+  const double horizon = next_synchronisation();
+  if (horizon < horizon_ && relax_ && !restored_) {
+    // Predictions made so far may reach past the new horizon: make them again. (A restored
+    // run's events were made with the saved horizon and stand as they are.)
+    horizon_ = horizon;
+    for (std::size_t i = 0; i < events_.size(); ++i) predict(static_cast<std::int32_t>(i));
+  }
+  horizon_ = horizon;
+}
+
+double Simulator::next_synchronisation() const {
+  double t = kNever;
+  for (const PeriodicAction& a : actions_)
+    if (a.step && a.next_time < t) t = a.next_time;
+  return t;
+}
+
+void Simulator::fire_action(std::size_t k) {
+  PeriodicAction& action = actions_[k];
+  time_ = action.next_time;
+  if (!action.step) {
+    action.action();
+    action.next_time += action.interval;
+    calendar_.set(end_slot_ + 1 + k, action.next_time);
+    return;
+  }
+  ParticleStore& p = system_.particles;
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) advance(static_cast<std::int32_t>(i), time_);
+  last_particle_event_ = time_;
+  GlobalStep step{time_, p, flights_};
+  action.step(step);
+  if (flights_.size() != n) throw std::logic_error(action.name + " changed the number of flights");
+  for (std::size_t i = 0; i < n; ++i)
+    if (system_.species[p.species[i]].fixed) {
+      p.velocity[i] = p.spin[i] = Vec3::Zero();
+      flights_[i] = RelaxFlight{};
+    }
+  action.next_time += action.interval;
+  calendar_.set(end_slot_ + 1 + k, action.next_time);
+  horizon_ = next_synchronisation();
+  for (std::size_t i = 0; i < n; ++i) {
+    ++p.event_counter[i];
+    refresh_hot(static_cast<std::int32_t>(i));
+  }
+  for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
 
 bool Simulator::run_until(double t_end) {
   if (!(t_end >= time_))
     throw std::invalid_argument("run_until: the end time " + std::to_string(t_end) +
                                 " s is before the current time " + std::to_string(time_) + " s");
+  if (relax_ && horizon_ == kNever && !events_.empty())
+    throw std::logic_error("relax flights need a synchronising action (the fluid step)");
   calendar_.set(end_slot_, t_end);
   for (std::uint32_t countdown = 4096;; --countdown) {
     if (countdown == 0) {
@@ -157,11 +235,7 @@ bool Simulator::run_until(double t_end) {
       time_ = t_end;
       return true;
     } else {
-      PeriodicAction& action = actions_[slot - end_slot_ - 1];
-      time_ = action.next_time;
-      action.action();
-      action.next_time += action.interval;
-      calendar_.set(slot, action.next_time);
+      fire_action(slot - end_slot_ - 1);
     }
   }
 }
@@ -170,7 +244,11 @@ void Simulator::advance(std::int32_t i, double t) {
   ParticleStore& p = system_.particles;
   const double dt = t - p.clock[i];
   if (dt == 0.0) return;
-  if (has_gravity_) {
+  if (relax_) {
+    const RelaxFlight& f = flights_[i];
+    p.position[i] += f.displacement(p.velocity[i], dt);
+    p.velocity[i] = f.velocity(p.velocity[i], dt);
+  } else if (has_gravity_) {
     p.position[i] = system_.flight.position(p.position[i], p.velocity[i], dt);
     p.velocity[i] = system_.flight.velocity(p.velocity[i], dt);
   } else {
@@ -181,11 +259,13 @@ void Simulator::advance(std::int32_t i, double t) {
 
 Vec3 Simulator::position(std::size_t i) const {
   const ParticleStore& p = system_.particles;
+  if (relax_) return p.position[i] + flights_[i].displacement(p.velocity[i], time_ - p.clock[i]);
   return system_.flight.position(p.position[i], p.velocity[i], time_ - p.clock[i]);
 }
 
 Vec3 Simulator::velocity(std::size_t i) const {
   const ParticleStore& p = system_.particles;
+  if (relax_) return flights_[i].velocity(p.velocity[i], time_ - p.clock[i]);
   return system_.flight.velocity(p.velocity[i], time_ - p.clock[i]);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/cell_grid.hpp"
+#include "core/relax_flight.hpp"
 #include "core/system.hpp"
 #include "events/calendar.hpp"
 #include "events/collapse.hpp"
@@ -15,7 +16,18 @@
 
 namespace carom {
 
+/// How particles move between events (DESIGN.md section 2).
+enum class FlightModel {
+  /// Under gravity only (System::flight). Drag, if any, comes as velocity kicks from a
+  /// synchronising action (the `kick` scheme).
+  Ballistic,
+  /// Each particle flies its own RelaxFlight (gravity plus a linear drag), set by a
+  /// synchronising action (the fluid step); predictions never reach past the next one.
+  Relax,
+};
+
 struct SimulatorOptions {
+  FlightModel flight_model = FlightModel::Ballistic;  ///< See FlightModel.
   CollapseOptions collapse;   ///< TC model, low-speed elasticity, stall detector.
   /// How species are split into grid levels: < 0 picks the split with the least expected
   /// prediction work (default); > 0 gives a size its own level when it is below this ratio of
@@ -44,12 +56,22 @@ struct Energies {
   double total() const { return translational + rotational + potential + dissipated; }
 };
 
-/// A periodic global event: `action` runs at first, first + interval, ...
+/// What a synchronising action sees and may change: every particle advanced to `time`.
+struct GlobalStep {
+  double time;                        ///< s.
+  ParticleStore& particles;           ///< States as of `time`; velocities may be changed.
+  std::vector<RelaxFlight>& flights;  ///< Each particle's flight until the next step (Relax).
+};
+
+/// A periodic global event: `action` (or `step`) runs at first, first + interval, ...
 struct PeriodicAction {
   std::string name;                 ///< For diagnostics ("sample", "checkpoint").
   double next_time = kNever;        ///< Next time it fires, s.
   double interval = kNever;         ///< Period, s.
-  std::function<void()> action;     ///< What it does; it may read but not change the particles.
+  std::function<void()> action;     ///< Reads the run but changes no particle.
+  /// A synchronising action: every particle is advanced to the event time first, then this
+  /// may change velocities and flights, then every particle's events are predicted again.
+  std::function<void(GlobalStep&)> step;
 };
 
 /// Everything needed to continue a run exactly (bit for bit) from where it stopped: the
@@ -61,6 +83,7 @@ struct EngineState {
   std::vector<std::array<int, 3>> cells;            ///< Grid cell of each particle.
   std::vector<Event> events;                        ///< Each particle's next pair/wall event.
   std::vector<Event> crossings;                     ///< Each particle's next cell crossing.
+  std::vector<RelaxFlight> flights;                 ///< Relax model: each particle's flight.
   double time = 0;                                  ///< s.
   double last_particle_event = 0;                   ///< s.
   RunStatistics statistics;
@@ -96,6 +119,15 @@ class Simulator {
   /// Registers an action to run at first_time and then every interval seconds (a global event).
   void add_periodic_action(std::string name, double first_time, double interval,
                            std::function<void()> action);
+
+  /// Registers a synchronising action (see PeriodicAction::step): the fluid step, drag kicks.
+  /// With FlightModel::Relax, predictions never reach past the next one, so a Relax run needs
+  /// at least one.
+  void add_synchronising_action(std::string name, double first_time, double interval,
+                                std::function<void(GlobalStep&)> step);
+
+  /// Each particle's current flight (FlightModel::Relax), in the simulator's order.
+  const std::vector<RelaxFlight>& flights() const { return flights_; }
 
   /// The current time, s.
   double time() const { return time_; }
@@ -147,6 +179,16 @@ class Simulator {
   template <bool kGravity>
   void predict_after_crossing(std::int32_t i, int axis, int direction);
 
+  /// Relax flights: every prediction of particle i (cell crossing when new_trajectory).
+  void predict_relax(std::int32_t i, bool new_trajectory);
+  double relax_pair_time(std::int32_t i, std::int32_t j) const;
+  double relax_wall_time(std::int32_t i, const Wall& wall) const;
+  Event relax_cell_crossing(std::int32_t i) const;
+  /// Runs periodic action k at its time (synchronising first if it is a step).
+  void fire_action(std::size_t k);
+  /// The earliest next time of the synchronising actions (kNever if none), s.
+  double next_synchronisation() const;
+
   void process_particle_event(std::int32_t i);
   void collide_pair(std::int32_t i, std::int32_t j, double t);
   void collide_wall(std::int32_t i, std::int32_t w, double t);
@@ -186,6 +228,10 @@ class Simulator {
   double last_particle_event_ = 0;       ///< Time of the last processed particle event, s.
   RunStatistics statistics_;
   bool has_gravity_ = false;
+  bool relax_ = false;                         ///< options_.flight_model == Relax.
+  std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.
+  double horizon_ = kNever;                    ///< Relax: no prediction reaches past this, s.
+  bool restored_ = false;                      ///< Built from an EngineState (its events stand).
   std::vector<double> stall_window_start_;     ///< Per particle: start of its stall window, s.
   std::vector<std::uint32_t> stall_count_;     ///< Per particle: collisions in that window.
   double stall_window_ = 0;                    ///< s.

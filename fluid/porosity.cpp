@@ -1,1 +1,191 @@
-// porosity: to be written
+#include "porosity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "overlap.hpp"
+
+namespace carom {
+
+namespace {
+int wrap(int i, int n) {
+  const int m = i % n;
+  return m < 0 ? m + n : m;
+}
+
+/// The cells a sphere spans along one axis and the cell faces relative to its centre.
+struct AxisSpan {
+  int first = 0;              ///< First cell (before wrapping).
+  int count = 1;              ///< Cells spanned.
+  std::vector<double> edges;  ///< count + 1 face positions minus the centre, clamped to [-r, r].
+};
+
+void span_axis(const CellLayout& layout, bool periodic, int k, double centre, double radius,
+               AxisSpan& span) {
+  const int n = layout.cells[k];
+  const double h = (layout.upper[k] - layout.lower[k]) / n;
+  int first = static_cast<int>(std::floor((centre - radius - layout.lower[k]) / h));
+  int last = static_cast<int>(std::ceil((centre + radius - layout.lower[k]) / h)) - 1;
+  last = std::max(last, first);
+  if (!periodic) {
+    first = std::clamp(first, 0, n - 1);
+    last = std::clamp(last, 0, n - 1);
+  }
+  span.first = first;
+  span.count = last - first + 1;
+  span.edges.resize(span.count + 1);
+  for (int j = 0; j <= span.count; ++j)
+    span.edges[j] = std::clamp(layout.lower[k] + (first + j) * h - centre, -radius, radius);
+  // Walled axis: what pokes out of the grid counts in the boundary cell.
+  if (!periodic && first == 0) span.edges.front() = -radius;
+  if (!periodic && last == n - 1) span.edges.back() = radius;
+}
+}  // namespace
+
+void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic, const Vec3& centre,
+                  double radius, std::vector<CellShare>& shares) {
+  thread_local std::array<AxisSpan, 3> span;
+  thread_local std::vector<double> corner;
+  for (int k = 0; k < 3; ++k) span_axis(layout, periodic[k], k, centre[k], radius, span[k]);
+  const int nx = layout.cells[0], ny = layout.cells[1], nz = layout.cells[2];
+  auto cell_index = [&](int p, int q, int s) {
+    return layout.index(wrap(span[0].first + p, nx), wrap(span[1].first + q, ny),
+                        wrap(span[2].first + s, nz));
+  };
+  const int mx = span[0].count, my = span[1].count, mz = span[2].count;
+  if ((mx == 1 && my == 1 && mz == 1) || radius <= 0.0) {
+    shares.push_back({cell_index(0, 0, 0), 1.0});
+    return;
+  }
+  // Ball-corner volumes at the grid nodes; each cell's volume by inclusion-exclusion.
+  const int sx = mx + 1, sy = my + 1;
+  corner.resize(static_cast<std::size_t>(sx) * sy * (mz + 1));
+  for (int s = 0; s <= mz; ++s)
+    for (int q = 0; q <= my; ++q)
+      for (int p = 0; p <= mx; ++p)
+        corner[p + sx * (q + sy * s)] =
+            ball_corner_volume(span[0].edges[p], span[1].edges[q], span[2].edges[s], radius);
+  auto at = [&](int p, int q, int s) { return corner[p + sx * (q + sy * s)]; };
+  const std::size_t start = shares.size();
+  double total = 0.0;
+  for (int s = 0; s < mz; ++s)
+    for (int q = 0; q < my; ++q)
+      for (int p = 0; p < mx; ++p) {
+        const double volume = at(p, q, s) - at(p + 1, q, s) - at(p, q + 1, s) - at(p, q, s + 1) +
+                              at(p + 1, q + 1, s) + at(p + 1, q, s + 1) + at(p, q + 1, s + 1) -
+                              at(p + 1, q + 1, s + 1);
+        if (volume <= 0.0) continue;
+        shares.push_back({cell_index(p, q, s), volume});
+        total += volume;
+      }
+  for (std::size_t i = start; i < shares.size(); ++i) shares[i].fraction /= total;
+  // A sphere wider than a periodic box overlaps some cells through several images: merge them.
+  if ((periodic[0] && mx > nx) || (periodic[1] && my > ny) || (periodic[2] && mz > nz)) {
+    std::sort(shares.begin() + start, shares.end(),
+              [](const CellShare& a, const CellShare& b) { return a.cell < b.cell; });
+    std::size_t out = start;
+    for (std::size_t i = start; i < shares.size(); ++i) {
+      if (out > start && shares[out - 1].cell == shares[i].cell)
+        shares[out - 1].fraction += shares[i].fraction;
+      else
+        shares[out++] = shares[i];
+    }
+    shares.resize(out);
+  }
+}
+
+std::vector<CellShare> split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
+                                    const Vec3& centre, double radius) {
+  std::vector<CellShare> shares;
+  split_sphere(layout, periodic, centre, radius, shares);
+  return shares;
+}
+
+std::vector<double> open_volume(const CellLayout& layout, const std::vector<Wall>& walls) {
+  // Axis-aligned planes clip the cell's box; the others are kept as half-spaces.
+  std::vector<int> axis(walls.size(), -1);
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (walls[w].shape != Wall::Shape::Plane) continue;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(walls[w].normal[k]) >= 1.0 - 1e-12) axis[w] = k;
+  }
+  const Vec3 size = layout.cell_size();
+  std::vector<double> open(layout.count(), 0.0);
+  std::vector<HalfSpace> cutting;
+  for (int k = 0; k < layout.cells[2]; ++k)
+    for (int j = 0; j < layout.cells[1]; ++j)
+      for (int i = 0; i < layout.cells[0]; ++i) {
+        Vec3 lo = layout.lower + Vec3(i, j, k).cwiseProduct(size);
+        Vec3 hi = lo + size;
+        if (i == layout.cells[0] - 1) hi.x() = layout.upper.x();
+        if (j == layout.cells[1] - 1) hi.y() = layout.upper.y();
+        if (k == layout.cells[2] - 1) hi.z() = layout.upper.z();
+        for (std::size_t w = 0; w < walls.size(); ++w) {
+          const int a = axis[w];
+          if (a < 0) continue;
+          if (walls[w].normal[a] > 0.0)
+            lo[a] = std::max(lo[a], walls[w].point[a]);
+          else
+            hi[a] = std::min(hi[a], walls[w].point[a]);
+        }
+        if ((hi.array() <= lo.array()).any()) continue;
+        const double box = (hi - lo).prod();
+        double volume = box;
+        cutting.clear();
+        bool outside = false;
+        for (std::size_t w = 0; w < walls.size() && !outside; ++w) {
+          if (walls[w].shape != Wall::Shape::Plane || axis[w] >= 0) continue;
+          const HalfSpace h{walls[w].normal, walls[w].normal.dot(walls[w].point)};
+          double least = std::numeric_limits<double>::infinity(), most = -least;
+          for (int c = 0; c < 8; ++c) {
+            const Vec3 v(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z());
+            const double d = h.normal.dot(v) - h.offset;
+            least = std::min(least, d);
+            most = std::max(most, d);
+          }
+          if (most <= 0.0)
+            outside = true;
+          else if (least < 0.0)
+            cutting.push_back(h);
+        }
+        if (outside) continue;
+        if (!cutting.empty()) volume = box_halfspaces_volume(lo, hi, cutting);
+        for (const Wall& wall : walls) {
+          if (wall.shape != Wall::Shape::Cylinder) continue;
+          const double rectangle = (hi.x() - lo.x()) * (hi.y() - lo.y());
+          volume *= disk_rectangle_area(wall.point.x(), wall.point.y(), wall.radius, lo.x(), hi.x(),
+                                        lo.y(), hi.y()) /
+                    rectangle;
+        }
+        open[layout.index(i, j, k)] = volume;
+      }
+  return open;
+}
+
+SolidMapping map_solid_volume(const CellLayout& layout, const std::array<bool, 3>& periodic,
+                              std::span<const Vec3> centres, std::span<const double> radii,
+                              const std::vector<double>& open_volume, double min_porosity) {
+  const std::size_t cells = static_cast<std::size_t>(layout.count());
+  SolidMapping mapping;
+  mapping.solid_volume.assign(cells, 0.0);
+  mapping.porosity.assign(cells, 1.0);
+  std::vector<CellShare> shares;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const double a = radii[i];
+    const double volume = 4.0 / 3.0 * std::numbers::pi * a * a * a;
+    shares.clear();
+    split_sphere(layout, periodic, centres[i], a, shares);
+    for (const CellShare& s : shares) mapping.solid_volume[s.cell] += s.fraction * volume;
+  }
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (open_volume[c] <= 0.0) continue;
+    const double eps = 1.0 - mapping.solid_volume[c] / open_volume[c];
+    if (eps < min_porosity) ++mapping.floored_cells;
+    mapping.porosity[c] = std::max(min_porosity, eps);
+  }
+  return mapping;
+}
+
+}  // namespace carom

@@ -5,6 +5,7 @@
 
 #include "core/cell_grid.hpp"
 #include "enskog.hpp"
+#include "fluid/drag.hpp"
 
 namespace carom {
 
@@ -24,6 +25,66 @@ std::string law_text(const ContactLaw& law) {
   return text;
 }
 }  // namespace
+
+/// The gas part of the model, with the numbers that say whether it is needed and enough.
+/// Four significant digits: derived estimates, not inputs.
+static std::string short_number(double x) {
+  std::ostringstream out;
+  out.precision(4);
+  out << x;
+  return out.str();
+}
+
+static void describe_gas(const Scene& scene, std::ostringstream& out) {
+  const GasSettings& gas = scene.gas;
+  if (gas.coupling == CouplingLevel::None) {
+    out << "  gas coupling: none (no [gas]: particles move in vacuum; right for granular gases and for "
+           "particles so heavy or fast that drag does not matter)\n";
+    out << "  flight: ballistic (exact parabolas between events)\n";
+    return;
+  }
+  const System& system = scene.system;
+  const double g = system.flight.gravity.norm();
+  out << "  gas coupling: "
+      << (gas.coupling == CouplingLevel::OneWay
+              ? "one-way (the gas moves the particles; they neither take its volume nor push it: right "
+                "while the solid fraction stays below ~1e-3)"
+              : "two-way (porosity in the gas equations, drag reaction on the gas: needed for beds)")
+      << "\n";
+  out << "  gas: rho_g = " << short_number(gas.density) << " kg/m^3, mu_g = " << short_number(gas.viscosity)
+      << " Pa s on " << gas.cells[0] << " x " << gas.cells[1] << " x " << gas.cells[2] << " cells, fluid step "
+      << short_number(gas.time_step) << " s, drag closure " << gas.closure << "\n";
+  for (int s = 0; s < 6; ++s) {
+    const GasSide& side = gas.sides[s];
+    if (side.kind == GasSide::Kind::Inlet)
+      out << "  inlet " << gas_side_names()[s] << ": superficial velocity " << short_number(side.velocity) << " m/s"
+          << (side.ramp_time > 0 ? " (ramped over " + short_number(side.ramp_time) + " s)" : std::string())
+          << (side.jets.empty() ? "" : ", with " + std::to_string(side.jets.size()) + " jet(s)") << "\n";
+  }
+  const DragClosure closure(gas.closure, gas.fluidization_porosity, g > 0 ? g : 9.81);
+  for (const Species& sp : system.species) {
+    DragInput in;
+    in.diameter = in.sauter_diameter = sp.diameter;
+    in.gas_density = gas.density;
+    in.gas_viscosity = gas.viscosity;
+    in.particle_density = sp.density;
+    const double stokes_tau = sp.density * sp.diameter * sp.diameter / (18.0 * gas.viscosity);
+    out << "  " << sp.name << ": Stokes relaxation time " << short_number(stokes_tau) << " s";
+    if (g > 0) {
+      out << ", terminal velocity " << short_number(closure.terminal_velocity(in)) << " m/s, U_mf "
+          << short_number(closure.minimum_fluidization_velocity(in, 0.4)) << " m/s (" << gas.closure
+          << " at eps_mf = 0.4; Wen-Yu correlation " << short_number(wen_yu_minimum_fluidization_velocity(in, g))
+          << " m/s)";
+    }
+    out << "\n";
+  }
+  if (scene.flight.model == FlightSettings::Model::Kick)
+    out << "  flight: kick (ballistic, explicit drag kicks every " << short_number(scene.flight.particle_step)
+        << " s; stable only while that is below 2 tau of every particle, checked at every fluid step)\n";
+  else
+    out << "  flight: relax (exact flight under gravity and the drag frozen for each fluid step: stable for any "
+           "step, events exact)\n";
+}
 
 std::string describe_scene(const Scene& scene) {
   const System& system = scene.system;
@@ -83,8 +144,7 @@ std::string describe_scene(const Scene& scene) {
     }
   }
   out << "\nmodel:\n";
-  out << "  gas coupling: none (no [gas] section; particles move in vacuum)\n";
-  out << "  flight: ballistic (exact parabolas between events)\n";
+  describe_gas(scene, out);
   out << "  rotation: " << (friction ? "on (some mu > 0: collisions exchange spin)" : "off (every mu = 0: smooth spheres, spins never change)") << "\n";
   const CollapseOptions& c = scene.options.collapse;
   if (c.contact_time > 0)

@@ -72,6 +72,15 @@ void write_state(const h5::Group& group, const EngineState& s) {
 
   write_events(group.create_group("events"), s.events);
   write_events(group.create_group("crossings"), s.crossings);
+  std::vector<double> rate;
+  std::vector<Vec3> drive;
+  for (const RelaxFlight& f : s.flights) {
+    rate.push_back(f.rate);
+    drive.push_back(f.drive);
+  }
+  const h5::Group flights = group.create_group("flights");
+  flights.write("rate", rate);
+  flights.write("drive", flatten(drive), {drive.size(), 3});
 
   const RunStatistics& st = s.statistics;
   const h5::Group stats = group.create_group("statistics");
@@ -134,6 +143,11 @@ EngineState read_state(const h5::Group& group) {
 
   s.events = read_events(group.open_group("events"), n);
   s.crossings = read_events(group.open_group("crossings"), n);
+  const h5::Group flights = group.open_group("flights");
+  const std::vector<double> rate = flights.read<double>("rate", {n});
+  const std::vector<Vec3> drive = unflatten(flights.read<double>("drive", {n, 3}));
+  s.flights.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.flights[i] = RelaxFlight{rate[i], drive[i]};
 
   RunStatistics& st = s.statistics;
   const h5::Group stats = group.open_group("statistics");
@@ -165,7 +179,8 @@ EngineState read_state(const h5::Group& group) {
 
 }  // namespace
 
-void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info) {
+void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info,
+                      const GasCoupling* gas) {
   const EngineState state = sim.state();
   const std::string temporary = path + ".tmp";
   bool created = false;
@@ -174,6 +189,7 @@ void write_checkpoint(const std::string& path, const Simulator& sim, const RunIn
     created = true;
     write_info(file, info, kCheckpointKind);
     write_state(file.create_group("state"), state);
+    if (gas != nullptr) file.create_group("gas").write("state", gas->save());
     file.close();
     replace_file(temporary, path);
   } catch (...) {
@@ -187,6 +203,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   Checkpoint checkpoint;
   checkpoint.info = read_info(file, kCheckpointKind);
   checkpoint.state = read_state(file.open_group("state"));
+  if (file.contains("gas")) checkpoint.gas_state = file.open_group("gas").read<double>("state");
   return checkpoint;
 }
 

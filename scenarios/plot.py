@@ -10,7 +10,11 @@ Writes, as 150 dpi PNGs named after the run file:
                            each sample interval, with the Enskog prediction when the run is a
                            homogeneous gas (every axis periodic, no gravity, no walls);
   RUN_snapshot.png         one snapshot (the last by default) as circles of the particles' radii
-                           in a slab around the box's mid-plane, coloured by species.
+                           in a slab around the box's mid-plane, coloured by species;
+  RUN_gas.png              runs with a gas: the bed pressure drop against time and against the
+                           inlet velocity, with the buoyant weight per area W/A of the particles
+                           (the level a fluidized bed's pressure drop must reach);
+  RUN_gas_field.png        runs with a gas: porosity and gas velocity of the snapshot.
 
 Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
 Enskog rate of s-t collisions in a mixture at granular temperature T (k = 1):
@@ -210,6 +214,71 @@ def plot_snapshot(run, path, index, axes, slab):
     plt.close(fig)
 
 
+def buoyant_weight_per_area(run):
+    """W/A = sum m_i |g| (1 - rho_g/rho_p) / (area normal to gravity), Pa."""
+    lower, upper = run["domain/lower"][()], run["domain/upper"][()]
+    gravity = np.asarray(run["domain/gravity"][()])
+    down = int(np.argmax(np.abs(gravity)))
+    area = np.prod([upper[k] - lower[k] for k in range(3) if k != down])
+    rho_g = run["gas"].attrs["density"]
+    species = run["species"]
+    weight = sum(n * m * np.linalg.norm(gravity) * (1 - rho_g / rho)
+                 for n, m, rho in zip(species["count"][()], species["mass"][()],
+                                      species["density"][()]))
+    return weight / area
+
+
+def plot_gas(run, path):
+    series = run["timeseries"]
+    t = series["time"][()]
+    drop = series["gas_pressure_drop"][()]
+    inlet = series["gas_inlet_velocity"][()].max(axis=1)
+    weight = buoyant_weight_per_area(run)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9.6, 3.8))
+    left.plot(t, drop, color=COLOURS[0], lw=1.0, label="pressure drop")
+    left.axhline(weight, color="0.3", ls="--", lw=0.8, label=f"W/A = {weight:.4g} Pa")
+    left.set_xlabel("$t$ (s)")
+    left.set_ylabel(r"$\Delta p$ (Pa)")
+    twin = left.twinx()
+    twin.plot(t, inlet, color=COLOURS[1], lw=1.0)
+    twin.set_ylabel("inlet velocity $U$ (m/s)", color=COLOURS[1])
+    twin.spines["right"].set_visible(True)
+    left.legend(loc="lower right")
+    right.plot(inlet, drop, ".", ms=2, color=COLOURS[0])
+    right.axhline(weight, color="0.3", ls="--", lw=0.8)
+    right.set_xlabel("inlet superficial velocity $U$ (m/s)")
+    right.set_ylabel(r"$\Delta p$ (Pa)")
+    right.set_title(f"closure: {text(run['gas/closure'][()])}", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
+def plot_gas_field(run, path, index):
+    groups = sorted(run["snapshots"].keys())
+    snapshot = run["snapshots"][groups[index]]
+    cells = run["gas/cells"][()]
+    lower, spacing = run["gas/lower"][()], run["gas/spacing"][()]
+    porosity = snapshot["gas/porosity"][()]        # (nz, ny, nx)
+    velocity = snapshot["gas/velocity"][()]        # (nz, ny, nx, 3)
+    mid = cells[1] // 2
+    extent = [lower[0], lower[0] + cells[0] * spacing[0], lower[2], lower[2] + cells[2] * spacing[2]]
+    fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 5.0))
+    image = left.imshow(porosity[:, mid, :], origin="lower", extent=extent, cmap="viridis",
+                        vmin=max(0.3, porosity.min()), vmax=1.0, aspect="equal")
+    fig.colorbar(image, ax=left, label="porosity")
+    speed = velocity[:, mid, :, 2]
+    image = right.imshow(speed, origin="lower", extent=extent, cmap="magma", aspect="equal")
+    fig.colorbar(image, ax=right, label="gas velocity $u_z$ (m/s)")
+    for ax in (left, right):
+        ax.set_xlabel("$x$ (m)")
+        ax.set_ylabel("$z$ (m)")
+    fig.suptitle(f"$t$ = {snapshot.attrs['time']:.4g} s", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("run", help="the run's HDF5 file")
@@ -238,10 +307,14 @@ def main(argv=None):
             else:
                 args.axes = "xy"
         written = []
-        for name, draw in [("energies", lambda p: plot_energies(run, p)),
-                           ("collision_rates", lambda p: plot_collision_rates(run, p)),
-                           ("snapshot", lambda p: plot_snapshot(run, p, args.snapshot, args.axes,
-                                                                args.slab))]:
+        figures = [("energies", lambda p: plot_energies(run, p)),
+                   ("collision_rates", lambda p: plot_collision_rates(run, p)),
+                   ("snapshot", lambda p: plot_snapshot(run, p, args.snapshot, args.axes,
+                                                        args.slab))]
+        if "gas" in run:
+            figures += [("gas", lambda p: plot_gas(run, p)),
+                        ("gas_field", lambda p: plot_gas_field(run, p, args.snapshot))]
+        for name, draw in figures:
             path = os.path.join(out, f"{stem}_{name}.png")
             draw(path)
             written.append(path)

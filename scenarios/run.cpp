@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "gas_run.hpp"
 #include "progress.hpp"
 #include "run_output.hpp"
 #include "summary.hpp"
@@ -60,22 +61,24 @@ struct Schedule {
 };
 
 /// The loop shared by run and resume. `fresh`: a new run, whose t = 0 outputs are written here.
-int run_loop(Simulator& sim, RunFile& file, const Scene& scene, const RunInfo& info, const fs::path& dir,
-             double end_time, bool fresh, bool quiet) {
+int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene& scene,
+             const RunInfo& info, const fs::path& dir, double end_time, bool fresh, bool quiet) {
   install_stop_handlers();
   const std::string checkpoint_path = (dir / "checkpoint.h5").string();
   const std::string summary_path = (dir / "summary.json").string();
   RunStretch stretch;
   stretch.start_time = sim.time();
   stretch.start_statistics = sim.statistics();
+  stretch.gas = gas;
+  if (gas != nullptr) stretch.gas_start = gas->times();
   stretch.averages.sample(sim);
 
   Schedule snapshots{scene.output.snapshot_every}, samples{scene.output.sample_every},
       checkpoints{scene.output.checkpoint_every};
   double last_snapshot = sim.time(), last_sample = sim.time();
   if (fresh) {
-    file.write_snapshot(sim);
-    file.append_sample(sim);
+    file.write_snapshot(sim, gas);
+    file.append_sample(sim, gas);
     snapshots.pass(sim.time());
     samples.pass(sim.time());
     checkpoints.pass(sim.time());
@@ -113,17 +116,17 @@ int run_loop(Simulator& sim, RunFile& file, const Scene& scene, const RunInfo& i
       sim.run_until(target);
       const double t = sim.time();
       if (snapshots.due(t)) {
-        file.write_snapshot(sim);
+        file.write_snapshot(sim, gas);
         last_snapshot = t;
         snapshots.pass(t);
       }
       if (samples.due(t)) {
-        file.append_sample(sim);
+        file.append_sample(sim, gas);
         last_sample = t;
         samples.pass(t);
       }
       if (checkpoints.due(t)) {
-        write_checkpoint(checkpoint_path, sim, info);
+        write_checkpoint(checkpoint_path, sim, info, gas);
         checkpoints.pass(t);
       }
       stretch.averages.sample(sim);
@@ -132,7 +135,7 @@ int run_loop(Simulator& sim, RunFile& file, const Scene& scene, const RunInfo& i
       if (chunk_limited)
         chunk *= std::clamp(0.2 / std::max(spent, 1e-6), 0.5, 2.0);
       if (g_stop) {
-        write_checkpoint(checkpoint_path, sim, info);
+        write_checkpoint(checkpoint_path, sim, info, gas);
         finish("interrupted", "stopped by a signal at t = " + format_number(t) + " s; continue with: carom resume " + dir.string());
         std::cerr << "carom: interrupted at t = " << t << " s; checkpoint written. Continue with: carom resume "
                   << dir.string() << "\n";
@@ -143,10 +146,14 @@ int run_loop(Simulator& sim, RunFile& file, const Scene& scene, const RunInfo& i
     finish("inelastic_collapse", e.what());
     std::cerr << "carom: " << e.what() << "\n";
     return kExitFailure;
+  } catch (const KickUnstable& e) {
+    finish("kick_unstable", e.what());
+    std::cerr << "carom: " << e.what() << "\n";
+    return kExitFailure;
   }
-  if (last_snapshot < sim.time()) file.write_snapshot(sim);
-  if (last_sample < sim.time()) file.append_sample(sim);
-  write_checkpoint(checkpoint_path, sim, info);
+  if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
+  if (last_sample < sim.time()) file.append_sample(sim, gas);
+  write_checkpoint(checkpoint_path, sim, info, gas);
   finish("completed", "");
   if (!quiet) {
     const RunStatistics& s = sim.statistics();
@@ -200,8 +207,14 @@ int run_scene(Scene scene, const RunOptions& options) {
   const fs::path dir = options.out_dir;
   prepare_output_directory(dir, options.overwrite);
   const RunInfo info{scene.text, scene.name, scene.seed};
-  RunFile file((dir / "run.h5").string(), info, sim->system());
-  return run_loop(*sim, file, scene, info, dir, scene.end_time, true, options.quiet);
+  std::unique_ptr<GasCoupling> gas;
+  try {
+    gas = attach_gas(*sim, scene);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": [gas]: " + e.what());
+  }
+  RunFile file((dir / "run.h5").string(), info, sim->system(), gas.get());
+  return run_loop(*sim, gas.get(), file, scene, info, dir, scene.end_time, true, options.quiet);
 }
 
 int resume_run(const std::string& directory, std::optional<double> end_time, bool quiet) {
@@ -226,8 +239,9 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
     return kExitOk;
   }
   Simulator sim(scene.system, scene.options, std::move(checkpoint.state));
+  std::unique_ptr<GasCoupling> gas = attach_gas(sim, scene, &checkpoint.gas_state);
   std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());
-  return run_loop(sim, *file, scene, info, dir, end, false, quiet);
+  return run_loop(sim, gas.get(), *file, scene, info, dir, end, false, quiet);
 }
 
 }  // namespace carom

@@ -22,6 +22,13 @@ namespace carom {
 using namespace output_detail;
 
 namespace {
+/// Shape of a gas field: (nz, ny, nx) or (nz, ny, nx, components) (x varies fastest).
+std::vector<hsize_t> gas_shape(const std::array<int, 3>& cells, hsize_t components) {
+  std::vector<hsize_t> shape{hsize_t(cells[2]), hsize_t(cells[1]), hsize_t(cells[0])};
+  if (components > 0) shape.push_back(components);
+  return shape;
+}
+
 // ---- time series ------------------------------------------------------------------------------
 
 /// Columns of each time series (0: a 1-D series); uint64 series are listed separately.
@@ -29,6 +36,12 @@ struct SeriesLayout {
   std::vector<std::pair<std::string, hsize_t>> doubles;
   std::vector<std::pair<std::string, hsize_t>> counters;
 };
+
+/// Time series of a run with a gas: pressure drop over the domain (Pa; mean pressure of the
+/// lowest layer of gas cells minus the highest, along z), superficial inlet velocity of each
+/// side that is an inlet (m/s, one column per side, 0 elsewhere), total drag on the particles (N).
+const std::vector<std::pair<std::string, hsize_t>> kGasSeries = {
+    {"gas_pressure_drop", 0}, {"gas_inlet_velocity", 6}, {"gas_drag_force", 3}};
 
 SeriesLayout series_layout(std::size_t species, std::size_t walls) {
   SeriesLayout layout;
@@ -75,6 +88,9 @@ struct RunFile::Impl {
   std::size_t species_count = 0;
   std::size_t wall_count = 0;
   double volume = 0;  ///< Box volume, m^3 (the pressure tensor's normalisation).
+  bool has_gas = false;
+  std::array<int, 3> gas_cells{0, 0, 0};
+  Vec3 gas_lower = Vec3::Zero(), gas_spacing = Vec3::Zero();
 
   struct SnapshotEntry {
     std::string name;
@@ -97,7 +113,8 @@ struct RunFile::Impl {
   void drop_snapshots_from(double time);
 };
 
-RunFile::RunFile(const std::string& path, const RunInfo& info, const System& system)
+RunFile::RunFile(const std::string& path, const RunInfo& info, const System& system,
+                 const GasCoupling* gas)
     : impl_(std::make_unique<Impl>(h5::File::create(path))) {
   Impl& d = *impl_;
   d.path = path;
@@ -146,6 +163,22 @@ RunFile::RunFile(const std::string& path, const RunInfo& info, const System& sys
     series.create_extendible<double>(name, columns);
   for (const auto& [name, columns] : layout.counters)
     series.create_extendible<std::uint64_t>(name, columns);
+  if (gas != nullptr) {
+    d.has_gas = true;
+    d.gas_cells = gas->cells();
+    d.gas_lower = gas->grid_lower();
+    d.gas_spacing = gas->cell_size();
+    const h5::Group group = d.file.create_group("gas");
+    group.write<std::int32_t>("cells", {d.gas_cells[0], d.gas_cells[1], d.gas_cells[2]});
+    group.write<double>("lower", {d.gas_lower.x(), d.gas_lower.y(), d.gas_lower.z()});
+    group.write<double>("spacing", {d.gas_spacing.x(), d.gas_spacing.y(), d.gas_spacing.z()});
+    group.write("open_volume", gas->open_volume(), gas_shape(d.gas_cells, 0));
+    group.write_string("closure", gas->settings().closure);
+    group.set_attribute("density", gas->settings().density);
+    group.set_attribute("viscosity", gas->settings().viscosity);
+    group.set_attribute("time_step", gas->settings().time_step);
+    for (const auto& [name, columns] : kGasSeries) series.create_extendible<double>(name, columns);
+  }
   d.file.flush();
   d.write_xdmf();
 }
@@ -159,6 +192,16 @@ std::unique_ptr<RunFile> RunFile::append(const std::string& path) {
   d.species_count = d.file.open_group("species").open_dataset("diameter").size();
   d.wall_count = d.file.open_group("walls").open_dataset("name").size();
   d.volume = d.file.open_group("domain").attribute<double>("volume");
+  if (d.file.contains("gas")) {
+    const h5::Group gas = d.file.open_group("gas");
+    const auto cells = gas.read<std::int32_t>("cells", {3});
+    const auto lower = gas.read<double>("lower", {3});
+    const auto spacing = gas.read<double>("spacing", {3});
+    d.has_gas = true;
+    d.gas_cells = {cells[0], cells[1], cells[2]};
+    d.gas_lower = Vec3(lower[0], lower[1], lower[2]);
+    d.gas_spacing = Vec3(spacing[0], spacing[1], spacing[2]);
+  }
   const h5::Group snapshots = d.file.open_group("snapshots");
   for (const std::string& name : snapshots.children()) {
     const h5::Group snapshot = snapshots.open_group(name);
@@ -215,7 +258,7 @@ void RunFile::Impl::drop_snapshots_from(double time) {
   }
 }
 
-void RunFile::write_snapshot(const Simulator& sim) {
+void RunFile::write_snapshot(const Simulator& sim, const GasCoupling* gas) {
   Impl& d = *impl_;
   if (!d.snapshots.empty() && d.snapshots.back().time >= sim.time())
     d.drop_snapshots_from(sim.time());
@@ -248,12 +291,18 @@ void RunFile::write_snapshot(const Simulator& sim) {
   snapshot.write("radius", radius);
   snapshot.write("species", species);
   snapshot.write("id", id);
+  if (gas != nullptr && d.has_gas) {
+    const h5::Group fields = snapshot.create_group("gas");
+    fields.write("porosity", gas->porosity(), gas_shape(d.gas_cells, 0));
+    fields.write("pressure", gas->pressure_field(), gas_shape(d.gas_cells, 0));
+    fields.write("velocity", flatten(gas->velocity_field()), gas_shape(d.gas_cells, 3));
+  }
   d.snapshots.push_back({name, sim.time(), n});
   d.file.flush();
   d.write_xdmf();
 }
 
-void RunFile::append_sample(const Simulator& sim) {
+void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas) {
   Impl& d = *impl_;
   const double time = sim.time();
   if (d.has_previous && d.previous_time >= time) d.drop_samples_from(time);
@@ -298,6 +347,19 @@ void RunFile::append_sample(const Simulator& sim) {
     put("wall_collisions", stats.wall_collisions);
     put("wall_impulse",
         flatten(std::vector<Vec3>(stats.wall_impulse.begin(), stats.wall_impulse.end())));
+  }
+  if (d.has_gas) {
+    std::vector<double> inlet(6, 0.0);
+    double drop = 0.0;
+    Vec3 drag = Vec3::Zero();
+    if (gas != nullptr) {
+      for (int s = 0; s < 6; ++s) inlet[s] = gas->inlet_velocity(s, time);
+      drop = gas->pressure_drop();
+      drag = gas->total_drag();
+    }
+    put("gas_pressure_drop", std::vector<double>{drop});
+    put("gas_inlet_velocity", inlet);
+    put("gas_drag_force", std::vector<double>{drag.x(), drag.y(), drag.z()});
   }
   d.file.flush();
 
@@ -345,7 +407,38 @@ void RunFile::Impl::write_xdmf() const {
     attribute("id", false, "Int", 8);
     xml << "      </Grid>\n";
   }
-  xml << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  xml << "    </Grid>\n";
+  if (has_gas) {
+    // The gas: cell-centred fields on a uniform grid (nodes = cells + 1 per axis, z y x order).
+    const std::string dims = std::to_string(gas_cells[2]) + " " + std::to_string(gas_cells[1]) +
+                             " " + std::to_string(gas_cells[0]);
+    const std::string nodes = std::to_string(gas_cells[2] + 1) + " " +
+                              std::to_string(gas_cells[1] + 1) + " " + std::to_string(gas_cells[0] + 1);
+    xml << "    <Grid Name=\"gas\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const SnapshotEntry& s : snapshots) {
+      const std::string where = data_file + ":/snapshots/" + s.name + "/gas/";
+      xml << "      <Grid Name=\"gas_" << s.name << "\" GridType=\"Uniform\">\n"
+          << "        <Time Value=\"" << s.time << "\"/>\n"
+          << "        <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
+          << "        <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+          << "          <DataItem Dimensions=\"3\" Format=\"XML\">" << gas_lower.z() << " "
+          << gas_lower.y() << " " << gas_lower.x() << "</DataItem>\n"
+          << "          <DataItem Dimensions=\"3\" Format=\"XML\">" << gas_spacing.z() << " "
+          << gas_spacing.y() << " " << gas_spacing.x() << "</DataItem>\n"
+          << "        </Geometry>\n";
+      for (const char* field : {"porosity", "pressure", "velocity"}) {
+        const bool vector = std::string(field) == "velocity";
+        xml << "        <Attribute Name=\"" << field << "\" AttributeType=\""
+            << (vector ? "Vector" : "Scalar") << "\" Center=\"Cell\">\n"
+            << "          <DataItem Dimensions=\"" << dims << (vector ? " 3" : "")
+            << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << where << field
+            << "</DataItem>\n        </Attribute>\n";
+      }
+      xml << "      </Grid>\n";
+    }
+    xml << "    </Grid>\n";
+  }
+  xml << "  </Domain>\n</Xdmf>\n";
 
   // Written aside and renamed, so that a viewer never reads half a file.
   const std::string sidecar = xdmf_path_of(path);

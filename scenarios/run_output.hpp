@@ -35,6 +35,7 @@
 #include <string>
 
 #include "events/simulator.hpp"
+#include "fluid/coupling.hpp"
 
 namespace carom {
 
@@ -49,7 +50,8 @@ struct RunInfo {
 /// that a crash leaves a readable file with everything written so far.
 class RunFile {
  public:
-  RunFile(const std::string& path, const RunInfo& info, const System& system);
+  /// `gas`: the run's gas (nullptr without one): its grid goes into /gas.
+  RunFile(const std::string& path, const RunInfo& info, const System& system, const GasCoupling* gas = nullptr);
   /// Reopens an existing run file to append (used by `carom resume`). When the run resumes from
   /// a checkpoint older than the file's last outputs, the first snapshot / sample written drops
   /// those at or after its time, so the file ends as the uninterrupted run's would.
@@ -59,10 +61,10 @@ class RunFile {
   RunFile& operator=(const RunFile&) = delete;
 
   /// Adds a snapshot of every particle at sim.time() and rewrites the XDMF sidecar.
-  void write_snapshot(const Simulator& sim);
+  void write_snapshot(const Simulator& sim, const GasCoupling* gas = nullptr);
   /// Appends one row of every time series at sim.time(); rates and the pressure tensor are
   /// averages over the interval since the previous row (since t = 0 for the first).
-  void append_sample(const Simulator& sim);
+  void append_sample(const Simulator& sim, const GasCoupling* gas = nullptr);
   const std::string& path() const;
 
  private:
@@ -73,12 +75,14 @@ class RunFile {
 
 /// Writes a checkpoint atomically (to a temporary file, then renamed over `path`), so a crash
 /// while writing never destroys the previous checkpoint.
-void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info);
+void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info,
+                      const GasCoupling* gas = nullptr);
 
 /// A checkpoint read back.
 struct Checkpoint {
   RunInfo info;
   EngineState state;
+  std::vector<double> gas_state;  ///< GasCoupling::save(); empty without a gas.
 };
 Checkpoint read_checkpoint(const std::string& path);
 

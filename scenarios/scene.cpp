@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "gas_scene.hpp"
 #include "overrides.hpp"
 
 namespace carom {
@@ -13,9 +14,9 @@ namespace carom {
 namespace {
 
 const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
-                                            "collisions", "flight", "initial", "time",    "output", "engine"};
+                                            "collisions", "flight", "initial", "time",    "output", "engine", "gas"};
 /// Sections of the design that later issues implement: named, so the error says so.
-const std::vector<std::string> kLaterSections = {"gas", "analysis"};
+const std::vector<std::string> kLaterSections = {"analysis"};
 
 std::string vec_text(const Vec3& v) {
   std::string text("[");
@@ -69,6 +70,7 @@ void read_species(TableReader& root, Scene& scene, std::vector<TableReader>& spe
       if (other.name == species.name) s.fail("name", "is used by two species; names must be unique");
     species.diameter = s.number("diameter", Range::positive("sphere diameter, m"));
     species.density = s.number("density", Range::positive("solid density, kg/m^3"));
+    species.fixed = s.boolean("fixed", false);
     scene.system.species.push_back(species);
   }
 }
@@ -275,15 +277,6 @@ void read_collisions(TableReader& root, Scene& scene) {
   c->finish();
 }
 
-void read_flight(TableReader& root) {
-  if (auto f = root.table("flight")) {
-    const std::string model = f->string("model", "ballistic", {"ballistic", "relax", "kick"});
-    if (model != "ballistic")
-      f->fail("model", "is not yet supported: it needs the gas coupling ([gas]), which comes in a later version; use \"ballistic\"");
-    f->finish();
-  }
-}
-
 void read_initial(TableReader& root, Scene& scene) {
   if (auto i = root.table("initial")) {
     scene.seed = static_cast<std::uint64_t>(i->integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max(), "random seed"));
@@ -347,8 +340,7 @@ void check_sections(const toml::table& table, const std::string& file) {
     const std::string name(key.str());
     if (std::find(kLaterSections.begin(), kLaterSections.end(), name) != kLaterSections.end())
       throw SceneError(probe.where(value) + ": [" + name + "] is not yet supported by this version of carom" +
-                       (name == "gas" ? " (the gas coupling comes in a later version; remove [gas] to run without a gas)"
-                                      : " (remove it)"));
+                       " (remove it)");
   }
 }
 
@@ -391,7 +383,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   read_walls(root, scene);
   read_listed(root, scene);
   read_collisions(root, scene);
-  read_flight(root);
+  read_flight_and_gas(root, scene);
   read_initial(root, scene);
   read_time_and_output(root, scene);
   read_engine(root, scene);

@@ -14,6 +14,7 @@
 
 #include "core/system.hpp"
 #include "events/simulator.hpp"
+#include "fluid/gas_settings.hpp"
 #include "scene_reader.hpp"
 
 namespace carom {
@@ -62,6 +63,13 @@ struct OutputSchedule {
   double checkpoint_every = 0;
 };
 
+/// [flight]: how particles move between events (DESIGN.md section 2).
+struct FlightSettings {
+  enum class Model { Ballistic, Relax, Kick };
+  Model model = Model::Ballistic;
+  double particle_step = 0;  ///< Kick: time between drag kicks dt_p, s.
+};
+
 struct Scene {
   std::string file;           ///< Name used in messages.
   std::string text;           ///< Scene text as run (re-serialized when --set changed it).
@@ -79,6 +87,8 @@ struct Scene {
   double settle_time = 0;     ///< Settling run before t = 0 (gravity, walls, laws, collapse settings), s; 0: none.
   bool settle_zero_velocity = false;  ///< Zero velocities and spins after settling.
   std::string settle_where;   ///< "file:line" of initial.settle_time, for messages.
+  FlightSettings flight;      ///< [flight].
+  GasSettings gas;            ///< [gas]; coupling None when absent.
   double end_time = 0;        ///< s.
   OutputSchedule output;
 };

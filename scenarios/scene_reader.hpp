@@ -71,6 +71,11 @@ class TableReader {
     return n != nullptr ? where(*n) : where();
   }
 
+  /// True when the key is present and holds a string (a key that may be a string or a table).
+  bool is_string(std::string_view key) const {
+    const toml::node* n = table_->get(key);
+    return n != nullptr && n->is_string();
+  }
   /// True when the key is present (and records it as known).
   bool has(std::string_view key);
   /// Records keys as known without reading them.

@@ -10,7 +10,17 @@ namespace carom {
 void settle(Scene& scene) {
   System& system = scene.system;
   const std::string context = scene.settle_where + ": initial.settle_time = " + format_number(scene.settle_time);
-  Simulator sim(system, scene.options);
+  // Settling happens without the gas: ballistic flights, unless fixed particles sit under
+  // gravity (they need each particle's own flight: relax flights without drag, which are the
+  // same parabola, with a global step that only bounds the predictions).
+  SimulatorOptions options = scene.options;
+  const bool any_fixed = std::any_of(system.species.begin(), system.species.end(),
+                                     [](const Species& s) { return s.fixed; });
+  options.flight_model = any_fixed ? FlightModel::Relax : FlightModel::Ballistic;
+  Simulator sim(system, options);
+  if (any_fixed)
+    sim.add_synchronising_action("settling_step", 0.0, std::max(scene.settle_time / 100.0, 1e-3),
+                                 [](GlobalStep&) {});
   try {
     sim.run_until(scene.settle_time);
   } catch (const InelasticCollapse& e) {

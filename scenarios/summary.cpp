@@ -138,8 +138,20 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
     << ", \"total\": " << number(p_kin + p_coll) << "},\n";
   const Energies e = sim.energies();
   j << "  \"energy\": {\"translational\": " << number(e.translational) << ", \"rotational\": " << number(e.rotational)
-    << ", \"potential\": " << number(e.potential) << ", \"dissipated\": " << number(e.dissipated) << "}\n";
-  j << "}\n";
+    << ", \"potential\": " << number(e.potential) << ", \"dissipated\": " << number(e.dissipated) << "},\n";
+  j << "  \"simulated_seconds_per_wall_second\": "
+    << number(stretch.wall_seconds > 0 ? dt / stretch.wall_seconds : NAN);
+  if (stretch.gas != nullptr) {
+    const CouplingTimes& t = stretch.gas->times();
+    const CouplingTimes& t0 = stretch.gas_start;
+    const double mapping = t.mapping - t0.mapping, solve = t.solve - t0.solve,
+                 interpolation = t.interpolation - t0.interpolation;
+    j << ",\n  \"gas\": {\"fluid_steps\": " << (t.steps - t0.steps)
+      << ", \"mapping_seconds\": " << number(mapping) << ", \"solve_seconds\": " << number(solve)
+      << ", \"interpolation_seconds\": " << number(interpolation)
+      << ", \"event_seconds\": " << number(stretch.wall_seconds - mapping - solve - interpolation) << "}";
+  }
+  j << "\n}\n";
   return j.str();
 }
 

@@ -20,10 +20,15 @@
 ///   pressure                 time-averaged {kinetic, collisional, total}, Pa:
 ///                            P_kin = <2 E_kin / (3 V)>, P_coll = sum r_ij . J_i / (3 V dt)
 ///   energy                   final {translational, rotational, potential, dissipated}, J
+///   simulated_seconds_per_wall_second
+///   gas                      runs with a gas: {fluid_steps, mapping_seconds, solve_seconds,
+///                            interpolation_seconds (wall time of each part of the fluid steps),
+///                            event_seconds (the rest of the wall time: the particles' events)}
 #include <chrono>
 #include <string>
 
 #include "events/simulator.hpp"
+#include "fluid/coupling.hpp"
 #include "scene.hpp"
 
 namespace carom {
@@ -53,6 +58,8 @@ struct RunStretch {
   RunStatistics start_statistics;      ///< Counters when the stretch began.
   double wall_seconds = 0;             ///< s.
   TimeAverages averages;
+  const GasCoupling* gas = nullptr;    ///< The run's gas, if any.
+  CouplingTimes gas_start;             ///< Its timers when the stretch began.
 };
 
 /// The summary as JSON text.

@@ -140,9 +140,51 @@ TEST(SceneErrors, WrongChoiceSuggestsClosest) {
                {"bad.toml:12", "collisions.collapse.model = \"tcc\"", "one of \"none\", \"tc\"", "did you mean \"tc\""});
 }
 
-TEST(SceneErrors, GasIsNotYetSupported) {
-  expect_error(kBase + "[gas]\ncoupling = \"two-way\"\n", {"bad.toml:11", "[gas] is not yet supported"});
-  expect_error(kBase + "[flight]\nmodel = \"relax\"\n", {"bad.toml:12", "flight.model = \"relax\"", "not yet supported"});
+TEST(SceneErrors, FlightAndGasMustFit) {
+  expect_error(kBase + "[flight]\nmodel = \"relax\"\n",
+               {"bad.toml:12", "flight.model = \"relax\"", "needs a gas", "[gas]"});
+  expect_error(kBase + "[gas]\ncoupling = \"two-way\"\n",
+               {"bad.toml:12", "gas.coupling", "\"two_way\""});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[flight]\nmodel = \"ballistic\"\n",
+               {"bad.toml:14", "ignores the gas", "\"relax\"", "\"kick\""});
+  expect_error(kBase + "[gas]\ncoupling = \"one_way\"\n", {"gas.cells", "missing"});
+  expect_error(kBase + "[gas]\ncells = [4, 0, 4]\n", {"bad.toml:12", "gas.cells", "[1, 1000000]"});
+  expect_error(kBase + "[gas]\ncells = [4, 1.5, 4]\n", {"bad.toml:12", "whole numbers"});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\ntime_step = -1e-4\n", {"bad.toml:13", "gas.time_step", "(0, inf)"});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\ndrag = \"ergun2\"\n", {"bad.toml:13", "gas.drag", "did you mean 'ergun'"});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[gas.boundaries]\nz_low = \"inlet\"\n",
+               {"bad.toml:14", "gas.boundaries.z_low", "needs a velocity"});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[gas.boundaries]\nz_lo = \"wall\"\n",
+               {"unknown key 'gas.boundaries.z_lo'", "did you mean 'z_low'"});
+  expect_error(replace(kBase, "min = [0.0, 0.0, 0.0]", "min = [0.0, 0.0, 0.0]\nperiodic = [\"x\"]") +
+                   "[gas]\ncells = [4, 4, 4]\n[gas.boundaries]\nx_low = \"wall\"\n",
+               {"gas.boundaries.x_low", "periodic axis"});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[flight]\nmodel = \"relax\"\nparticle_step = 1e-4\n",
+               {"flight.particle_step", "only used with model = \"kick\""});
+}
+
+TEST(Scene, ReadsGasAndFlight) {
+  const std::string text = kBase +
+                           "[gas]\ncells = [2, 3, 4]\ntime_step = 2e-4\ndrag = \"beetstra\"\n"
+                           "[gas.boundaries]\nz_low = { type = \"inlet\", velocity = 0.3, ramp_time = 1.0 }\n"
+                           "z_high = \"outlet\"\nx_low = \"wall\"\n"
+                           "[flight]\nmodel = \"kick\"\n";
+  Scene scene = parse_scene(text, "good.toml");
+  EXPECT_EQ(scene.gas.coupling, CouplingLevel::TwoWay);
+  EXPECT_EQ(scene.gas.cells, (std::array<int, 3>{2, 3, 4}));
+  EXPECT_EQ(scene.gas.closure, "beetstra");
+  EXPECT_EQ(scene.gas.sides[4].kind, GasSide::Kind::Inlet);
+  EXPECT_DOUBLE_EQ(scene.gas.sides[4].velocity, 0.3);
+  EXPECT_DOUBLE_EQ(scene.gas.sides[4].ramp_time, 1.0);
+  EXPECT_EQ(scene.gas.sides[5].kind, GasSide::Kind::Outlet);
+  EXPECT_EQ(scene.gas.sides[0].kind, GasSide::Kind::Wall);
+  EXPECT_EQ(scene.gas.sides[1].kind, GasSide::Kind::FreeSlip);
+  EXPECT_EQ(scene.flight.model, FlightSettings::Model::Kick);
+  EXPECT_DOUBLE_EQ(scene.flight.particle_step, 2e-4) << "kick step defaults to the fluid step";
+  EXPECT_EQ(scene.options.flight_model, FlightModel::Ballistic) << "kicks fly ballistic";
+  // A coupled gas without [flight] flies relax.
+  Scene relax = parse_scene(kBase + "[gas]\ncells = [2, 3, 4]\n", "good.toml");
+  EXPECT_EQ(relax.options.flight_model, FlightModel::Relax);
 }
 
 TEST(SceneErrors, OverlappingParticlesNamed) {

@@ -1,0 +1,106 @@
+// Event predictions for relax flights (gravity plus a linear drag frozen for one fluid step):
+// pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
+// (horizon_), where every particle is synchronised and predicted again.
+#include "core/relax_roots.hpp"
+#include "simulator.hpp"
+
+namespace carom {
+
+double Simulator::relax_pair_time(std::int32_t i, std::int32_t j) const {
+  const HotState& a = hot_[i];
+  const HotState& b = hot_[j];
+  const RelaxFlight& fa = flights_[i];
+  const RelaxFlight& fb = flights_[j];
+  // Both states at the later of the two clocks.
+  const double t_ref = a.clock > b.clock ? a.clock : b.clock;
+  const double horizon = horizon_ - t_ref;
+  if (!(horizon > 0.0)) return kNever;
+  const double dt_a = t_ref - a.clock, dt_b = t_ref - b.clock;
+  Vec3 dr = a.position - b.position;
+  Vec3 va = a.velocity, vb = b.velocity;
+  if (dt_a > 0.0) {
+    dr += fa.displacement(a.velocity, dt_a);
+    va = fa.velocity(a.velocity, dt_a);
+  }
+  if (dt_b > 0.0) {
+    dr -= fb.displacement(b.velocity, dt_b);
+    vb = fb.velocity(b.velocity, dt_b);
+  }
+  system_.domain.minimum_image(dr);
+  const double s = relax_pair_contact_time(dr, va, fa, vb, fb, a.radius + b.radius, horizon);
+  return s == kNever ? kNever : t_ref + s;
+}
+
+double Simulator::relax_wall_time(std::int32_t i, const Wall& wall) const {
+  const HotState& p = hot_[i];
+  const RelaxFlight& f = flights_[i];
+  const double horizon = horizon_ - p.clock;
+  double s;
+  if (wall.shape == Wall::Shape::Plane) {
+    const double gap = (p.position - wall.point).dot(wall.normal) - p.radius;
+    s = relax_gap_closing_time(gap, p.velocity.dot(wall.normal), f.drive.dot(wall.normal), f.rate,
+                               horizon);
+  } else {
+    s = relax_cylinder_contact_time(p.position - wall.point, p.velocity, f, wall.radius - p.radius,
+                                    horizon);
+  }
+  return s == kNever ? kNever : p.clock + s;
+}
+
+Event Simulator::relax_cell_crossing(std::int32_t i) const {
+  Event best;
+  const HotState& p = hot_[i];
+  const RelaxFlight& f = flights_[i];
+  const double horizon = horizon_ - p.clock;
+  const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
+  for (int k = 0; k < 3; ++k) {
+    // The gap to the upper face closes at -v_k; its "drive" is -drive_k (see relax_roots.hpp).
+    if (!grid_.is_outer_face(i, k, +1)) {
+      const double s = relax_gap_closing_time(upper[k] - p.position[k], -p.velocity[k],
+                                              -f.drive[k], f.rate, horizon);
+      if (s != kNever && p.clock + s < best.time)
+        best = Event{p.clock + s, 2 * k + 1, 0, EventKind::CellCrossing};
+    }
+    if (!grid_.is_outer_face(i, k, -1)) {
+      const double s = relax_gap_closing_time(p.position[k] - lower[k], p.velocity[k], f.drive[k],
+                                              f.rate, horizon);
+      if (s != kNever && p.clock + s < best.time)
+        best = Event{p.clock + s, 2 * k, 0, EventKind::CellCrossing};
+    }
+  }
+  return best;
+}
+
+void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
+  if (horizon_ == kNever) {
+    // No fluid step registered yet: nothing can be predicted (registering one predicts all).
+    events_[i] = crossings_[i] = Event{};
+    schedule(i);
+    return;
+  }
+  if (new_trajectory) crossings_[i] = relax_cell_crossing(i);
+  const auto& counter = system_.particles.event_counter;
+  Event best;
+  for (std::size_t w = 0; w < system_.walls.size(); ++w) {
+    const double t = relax_wall_time(i, system_.walls[w]);
+    if (t < best.time) best = Event{t, static_cast<std::int32_t>(w), 0, EventKind::Wall};
+  }
+  auto consider = [&](std::int32_t j) {
+    if (j == i) return;
+    const double t = relax_pair_time(i, j);
+    if (t < best.time) best = Event{t, j, counter[j], EventKind::Pair};
+  };
+  std::int32_t cells[HierarchicalGrid::kMaxBlock];
+  bool wrapped = false;
+  const int count = grid_.own_block(i, cells, wrapped);
+  const int level = grid_.level_of(i);
+  const std::int32_t* next = grid_.next_array();
+  for (int c = 0; c < count; ++c)
+    for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) consider(j);
+  if (grid_.levels().size() > 1)
+    grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, consider);
+  events_[i] = best;
+  schedule(i);
+}
+
+}  // namespace carom

@@ -1,0 +1,286 @@
+#include "coupling.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "drag.hpp"
+#include "gas_solver.hpp"
+#include "porosity.hpp"
+
+namespace carom {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
+                         const std::vector<Wall>& walls, const Vec3& gravity,
+                         std::vector<double> species_density)
+    : settings_(settings), domain_(domain), gravity_(gravity),
+      species_density_(std::move(species_density)) {
+  layout_ = CellLayout::over(domain, settings.cells);
+  open_volume_ = carom::open_volume(layout_, walls);
+  cell_volume_ = layout_.cell_volume();
+  GasGrid grid(domain.lower, domain.upper, settings.cells);
+  grid.set_open_volume(open_volume_);
+  std::array<GasBoundary, 6> boundaries;
+  for (int s = 0; s < 6; ++s) {
+    const GasSide& side = settings.sides[s];
+    GasBoundary& b = boundaries[s];
+    switch (side.kind) {
+      case GasSide::Kind::Wall: b.kind = GasBoundaryKind::Wall; break;
+      case GasSide::Kind::FreeSlip: b.kind = GasBoundaryKind::FreeSlip; break;
+      case GasSide::Kind::Inlet: b.kind = GasBoundaryKind::Inlet; break;
+      case GasSide::Kind::Outlet: b.kind = GasBoundaryKind::Outlet; break;
+      case GasSide::Kind::Periodic: b.kind = GasBoundaryKind::Periodic; break;
+    }
+    b.pressure = side.pressure;
+    b.superficial_velocity = inlet_velocity(s, 0.0);
+    if (side.kind == GasSide::Kind::Inlet && !side.jets.empty()) {
+      // Face cells whose centre lies in a jet blow at the jet's velocity.
+      const int axis = s / 2, first = axis == 0 ? 1 : 0, second = axis == 2 ? 1 : 2;
+      const Vec3 h = layout_.cell_size();
+      std::vector<double> profile(std::size_t(settings.cells[first]) * settings.cells[second], side.velocity);
+      for (int i = 0; i < settings.cells[first]; ++i)
+        for (int j = 0; j < settings.cells[second]; ++j) {
+          const double x = domain.lower[first] + (i + 0.5) * h[first];
+          const double y = domain.lower[second] + (j + 0.5) * h[second];
+          for (const InletJet& jet : side.jets)
+            if (x >= jet.lower[0] && x <= jet.upper[0] && y >= jet.lower[1] && y <= jet.upper[1])
+              profile[i + std::size_t(settings.cells[first]) * j] = jet.velocity;
+        }
+      jet_profiles_[s] = profile;
+    }
+  }
+  for (int s = 0; s < 6; ++s)
+    if (!jet_profiles_[s].empty()) boundaries[s].jet_profile = scaled_profile(s, 0.0);
+  solver_ = std::make_unique<GasSolver>(std::move(grid), GasProperties{settings.density, settings.viscosity},
+                                        boundaries, gravity);
+  closure_ = std::make_unique<DragClosure>(settings.closure, settings.fluidization_porosity,
+                                           gravity.norm() > 0 ? gravity.norm() : 9.81);
+  porosity_.assign(layout_.count(), 1.0);
+  sauter_.assign(layout_.count(), 0.0);
+}
+
+std::vector<double> GasCoupling::scaled_profile(int side, double t) const {
+  const GasSide& s = settings_.sides[side];
+  const double factor = (s.ramp_time > 0.0 && t < s.ramp_time) ? t / s.ramp_time : 1.0;
+  std::vector<double> profile = jet_profiles_[side];
+  for (double& u : profile) u *= factor;
+  return profile;
+}
+
+void GasCoupling::prepare(const ParticleStore& particles) { map_particles(particles); }
+
+std::vector<double> GasCoupling::save() const {
+  std::vector<double> state = solver_->save_state();
+  state.insert(state.end(), porosity_.begin(), porosity_.end());
+  state.insert(state.end(), sauter_.begin(), sauter_.end());
+  return state;
+}
+
+void GasCoupling::restore(const std::vector<double>& state) {
+  const std::size_t cells = porosity_.size();
+  if (state.size() < 2 * cells)
+    throw std::invalid_argument("gas state: " + std::to_string(state.size()) + " values, too few for " +
+                                std::to_string(cells) + " cells");
+  const std::size_t solver_size = state.size() - 2 * cells;
+  solver_->restore_state(std::span<const double>(state.data(), solver_size));
+  std::copy(state.begin() + solver_size, state.begin() + solver_size + cells, porosity_.begin());
+  std::copy(state.begin() + solver_size + cells, state.end(), sauter_.begin());
+}
+
+GasCoupling::~GasCoupling() = default;
+
+double GasCoupling::inlet_velocity(int side, double t) const {
+  const GasSide& s = settings_.sides[side];
+  if (s.kind != GasSide::Kind::Inlet) return 0.0;
+  if (s.ramp_time > 0.0 && t < s.ramp_time) return s.velocity * t / s.ramp_time;
+  return s.velocity;
+}
+
+void GasCoupling::step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights) {
+  auto start = std::chrono::steady_clock::now();
+  map_particles(particles);
+  times_.mapping += seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  const std::size_t cells = porosity_.size();
+  std::vector<double> beta(cells, 0.0);
+  std::vector<Vec3> solid_velocity(cells, Vec3::Zero());
+  const bool two_way = settings_.coupling == CouplingLevel::TwoWay;
+  if (two_way) {
+    // Drag coefficients at the slip seen now (gas of the last step), mapped with the weights.
+    std::vector<double> k_sum(cells, 0.0);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      Vec3 u = Vec3::Zero();
+      double eps = 0.0;
+      for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
+        u += weights_[w].second * solver_->cell_velocity(weights_[w].first);
+        eps += weights_[w].second * porosity_[weights_[w].first];
+      }
+      const double k = drag_coefficient(i, particles, eps, (u - particles.velocity[i]).norm());
+      for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
+        const auto [c, fraction] = weights_[w];
+        k_sum[c] += fraction * k;
+        solid_velocity[c] += fraction * k * particles.velocity[i];
+      }
+    }
+    for (std::size_t c = 0; c < cells; ++c) {
+      // The solver applies beta (u - v_s) per unit open volume of the cell.
+      beta[c] = open_volume_[c] > 0.0 ? k_sum[c] / open_volume_[c] : 0.0;
+      if (k_sum[c] > 0.0) solid_velocity[c] /= k_sum[c];
+    }
+  }
+  const double t_new = t + settings_.time_step;
+  for (int s = 0; s < 6; ++s) {
+    if (settings_.sides[s].kind != GasSide::Kind::Inlet) continue;
+    if (jet_profiles_[s].empty())
+      solver_->set_inlet_velocity(s, inlet_velocity(s, t_new));
+    else
+      solver_->set_inlet_profile(s, scaled_profile(s, t_new));
+  }
+  const std::vector<double> gas_porosity = two_way ? porosity_ : std::vector<double>(cells, 1.0);
+  last_report_ = solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
+  times_.solve += seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  set_flights(particles, flights);
+  times_.interpolation += seconds_since(start);
+  ++times_.steps;
+}
+
+void GasCoupling::map_particles(const ParticleStore& particles) {
+  const std::size_t n = particles.size(), cells = porosity_.size();
+  weight_start_.assign(n + 1, 0);
+  weights_.clear();
+  std::vector<double> solid(cells, 0.0), d3(cells, 0.0), d2(cells, 0.0);
+  std::vector<CellShare> shares;
+  for (std::size_t i = 0; i < n; ++i) {
+    weight_start_[i] = weights_.size();
+    const double a = particles.radius[i];
+    const double volume = 4.0 / 3.0 * std::numbers::pi * a * a * a;
+    shares.clear();
+    split_sphere(layout_, domain_.periodic, particles.position[i], a, shares);
+    for (const CellShare& share : shares) {
+      weights_.emplace_back(share.cell, share.fraction);
+      solid[share.cell] += share.fraction * volume;
+      d3[share.cell] += share.fraction * 8.0 * a * a * a;
+      d2[share.cell] += share.fraction * 4.0 * a * a;
+    }
+  }
+  weight_start_[n] = weights_.size();
+  for (std::size_t c = 0; c < cells; ++c) {
+    porosity_[c] = open_volume_[c] > 0.0 ? std::max(settings_.min_porosity, 1.0 - solid[c] / open_volume_[c]) : 1.0;
+    sauter_[c] = d2[c] > 0.0 ? d3[c] / d2[c] : 0.0;
+  }
+}
+
+double GasCoupling::drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
+                                     double slip) const {
+  DragInput input{};
+  input.porosity = eps;
+  input.slip = slip;
+  input.diameter = 2.0 * particles.radius[i];
+  input.gas_density = settings_.density;
+  input.gas_viscosity = settings_.viscosity;
+  input.particle_density = species_density_[particles.species[i]];
+  // Polydisperse closures: the particle's size relative to the local Sauter mean diameter.
+  double sauter = 0.0;
+  for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w)
+    sauter += weights_[w].second * sauter_[weights_[w].first];
+  input.sauter_diameter = sauter > 0.0 ? sauter : input.diameter;
+  return closure_->drag_coefficient(input);
+}
+
+void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights) {
+  total_drag_ = Vec3::Zero();
+  const std::size_t n = particles.size();
+  flights.resize(n);
+  species_gas_velocity_.assign(species_density_.size(), Vec3::Zero());
+  species_count_.assign(species_density_.size(), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 u = Vec3::Zero(), grad_p = Vec3::Zero();
+    double eps = 0.0;
+    for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
+      const auto [c, fraction] = weights_[w];
+      u += fraction * solver_->cell_velocity(c);
+      grad_p += fraction * solver_->pressure_gradient(c);
+      eps += fraction * porosity_[c];
+    }
+    const Vec3& v = particles.velocity[i];
+    const double k = drag_coefficient(i, particles, eps, (u - v).norm());
+    const double rate = k / particles.mass[i];
+    const std::uint32_t s = particles.species[i];
+    flights[i] = RelaxFlight{rate, gravity_ + rate * u - grad_p / species_density_[s]};
+    total_drag_ += k * (u - v);
+    species_gas_velocity_[s] += u;
+    ++species_count_[s];
+  }
+}
+
+Vec3 GasCoupling::mean_gas_velocity_at(std::uint32_t s) const {
+  if (s >= species_count_.size() || species_count_[s] == 0) return Vec3::Zero();
+  return species_gas_velocity_[s] / static_cast<double>(species_count_[s]);
+}
+
+void GasCoupling::check_kick_stability(double dt_p, const ParticleStore& particles,
+                                       const std::vector<RelaxFlight>& flights) const {
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (flights[i].rate * dt_p <= 2.0) continue;
+    const double tau = 1.0 / flights[i].rate;
+    std::ostringstream out;
+    out << "kick flights are unstable: particle " << particles.id[i] << " has a drag relaxation time tau = m/K = "
+        << tau << " s, and the particle step dt_p = " << dt_p
+        << " s exceeds 2 tau: each explicit drag kick overshoots the gas velocity by a factor |1 - dt_p/tau| = "
+        << std::abs(1.0 - dt_p / tau)
+        << " > 1, so velocities grow without bound. Remedy: flight.model = \"relax\" (exact for any step), or "
+           "flight.particle_step below "
+        << 2.0 * tau << " s (tau / 5 or less for first-order accuracy).";
+    throw KickUnstable(out.str());
+  }
+}
+
+void GasCoupling::kick(double dt_p, ParticleStore& particles, const std::vector<RelaxFlight>& flights) const {
+  check_kick_stability(dt_p, particles, flights);
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    particles.velocity[i] += dt_p * (flights[i].acceleration(particles.velocity[i]) - gravity_);
+}
+
+std::vector<double> GasCoupling::pressure_field() const {
+  std::vector<double> p(porosity_.size());
+  for (std::size_t c = 0; c < p.size(); ++c) p[c] = solver_->pressure(static_cast<int>(c));
+  return p;
+}
+
+std::vector<Vec3> GasCoupling::velocity_field() const {
+  std::vector<Vec3> u(porosity_.size());
+  for (std::size_t c = 0; c < u.size(); ++c) u[c] = solver_->cell_velocity(static_cast<int>(c));
+  return u;
+}
+
+Vec3 GasCoupling::cell_size() const {
+  const Vec3 length = domain_.upper - domain_.lower;
+  return Vec3(length.x() / settings_.cells[0], length.y() / settings_.cells[1],
+              length.z() / settings_.cells[2]);
+}
+
+double GasCoupling::pressure_drop() const {
+  const int nz = settings_.cells[2], layer = settings_.cells[0] * settings_.cells[1];
+  auto mean = [&](int k) {
+    double sum = 0.0;
+    for (int c = 0; c < layer; ++c) sum += solver_->pressure(k * layer + c);
+    return sum / layer;
+  };
+  if (nz < 2) return 0.0;
+  // Linear extrapolation from the two outermost layers of cell centres to the faces.
+  const double bottom = 1.5 * mean(0) - 0.5 * mean(1);
+  const double top = 1.5 * mean(nz - 1) - 0.5 * mean(nz - 2);
+  return bottom - top;
+}
+
+}  // namespace carom

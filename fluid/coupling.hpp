@@ -1,0 +1,131 @@
+#pragma once
+/// The particle <-> gas coupling: the fluid step (DESIGN.md section 5) and the drag kicks.
+///
+/// At a fluid step at time t (every particle synchronised to t):
+///   1. each particle's volume is split over the gas cells it overlaps (exact sphere-cell
+///      volumes, fluid/porosity.hpp); the same weights w_ic map particle quantities to cells and
+///      interpolate cell quantities to particles, so the drag reaction on the gas is exactly
+///      minus the sum of the drag forces on the particles;
+///   2. porosity eps_c = 1 - solid_c / open_c; two-way: each cell's drag coefficient
+///      beta_c = sum_i w_ic K_i / V_c and solid velocity sum_i w_ic K_i v_i / sum_i w_ic K_i,
+///      with K_i from the closure at the slip seen before the solve;
+///   3. the gas is advanced from t to t + dt (fluid/gas_solver.hpp, drag implicit);
+///   4. each particle gets u_i, eps_i, grad p_i interpolated, K_i from the closure, and its
+///      flight for the step: rate = K_i / m_i, drive = g + rate u_i - grad p_i / rho_p.
+/// One-way coupling solves the gas with eps = 1 and no drag reaction; the particles still see
+/// the local porosity in their closure.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/domain.hpp"
+#include "core/particles.hpp"
+#include "core/relax_flight.hpp"
+#include "core/wall.hpp"
+#include "gas_settings.hpp"
+#include "gas_solver.hpp"
+#include "porosity.hpp"
+
+namespace carom {
+
+class DragClosure;
+
+/// Thrown when explicit drag kicks would be unstable (dt_p > 2 tau for some particle).
+class KickUnstable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Time spent in each part of the fluid steps, s of wall time (cumulative).
+struct CouplingTimes {
+  double mapping = 0;       ///< Splitting particles over cells, porosity, drag reaction.
+  double solve = 0;         ///< The gas solver.
+  double interpolation = 0; ///< Gas fields at the particles, closures, flights.
+  std::uint64_t steps = 0;  ///< Fluid steps taken.
+};
+
+class GasCoupling {
+ public:
+  /// `species_density`: rho_p of each species (kg/m^3), indexed like ParticleStore::species.
+  GasCoupling(const GasSettings& settings, const Domain& domain, const std::vector<Wall>& walls,
+              const Vec3& gravity, std::vector<double> species_density);
+  ~GasCoupling();
+  GasCoupling(const GasCoupling&) = delete;
+  GasCoupling& operator=(const GasCoupling&) = delete;
+
+  /// Maps the particles (porosity) without advancing the gas: the state at t = 0 for outputs.
+  void prepare(const ParticleStore& particles);
+  /// The fluid step at time t: particles as of t; sets flights[i] for [t, t + dt).
+  void step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights);
+
+  /// Explicit drag kick over dt_p (kick flights): v += dt_p (a_i(v) - g), the drag and
+  /// pressure-gradient part of flights[i]. Throws KickUnstable when dt_p rate_i > 2.
+  void kick(double dt_p, ParticleStore& particles, const std::vector<RelaxFlight>& flights) const;
+  /// Checks dt_p against every particle's relaxation time (see kick); no change.
+  void check_kick_stability(double dt_p, const ParticleStore& particles,
+                            const std::vector<RelaxFlight>& flights) const;
+
+  const GasSettings& settings() const { return settings_; }
+  /// Inlet superficial velocity of side s at time t (the ramp applied), m/s.
+  double inlet_velocity(int side, double t) const;
+  const GasSolver& solver() const { return *solver_; }
+  /// Porosity of each gas cell at the last step.
+  const std::vector<double>& porosity() const { return porosity_; }
+  /// Gas volume available in each cell (inside the walls), m^3.
+  const std::vector<double>& open_volume() const { return open_volume_; }
+  /// The gas cell count per axis.
+  std::array<int, 3> cells() const { return settings_.cells; }
+  /// Gas pressure in every cell (x fastest, then y, then z), Pa.
+  std::vector<double> pressure_field() const;
+  /// Interstitial gas velocity at every cell centre, m/s.
+  std::vector<Vec3> velocity_field() const;
+  /// Lower corner of the gas grid, m, and its cell size, m.
+  const Vec3& grid_lower() const { return domain_.lower; }
+  Vec3 cell_size() const;
+  /// Mean gas pressure at the bottom face of the grid minus that at the top face (along z;
+  /// each extrapolated linearly from the two outermost layers of cells), Pa.
+  double pressure_drop() const;
+  /// Mean interstitial gas velocity seen by the particles of species s at the last step, m/s.
+  Vec3 mean_gas_velocity_at(std::uint32_t s) const;
+  /// Sum of the drag forces on the particles at the last step, N.
+  const Vec3& total_drag() const { return total_drag_; }
+  const CouplingTimes& times() const { return times_; }
+  /// The gas solver's report of the last step (iterations, convergence, mass imbalance).
+  const GasStepReport& last_report() const { return last_report_; }
+
+  /// Gas state for checkpoints: every array the next step depends on, as plain doubles.
+  std::vector<double> save() const;
+  void restore(const std::vector<double>& state);
+
+ private:
+  void map_particles(const ParticleStore& particles);
+  /// Side s's jet profile at time t (the ramp applied), m/s.
+  std::vector<double> scaled_profile(int side, double t) const;
+  void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights);
+  /// K_i (kg/s) of particle i from the closure at slip speed `slip` and porosity eps.
+  double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps, double slip) const;
+
+  GasSettings settings_;
+  Domain domain_;
+  Vec3 gravity_;
+  std::vector<double> species_density_;
+  std::unique_ptr<GasSolver> solver_;
+  std::unique_ptr<DragClosure> closure_;
+  std::array<std::vector<double>, 6> jet_profiles_;  ///< Inlet sides with jets: full profile, m/s.
+  GasStepReport last_report_;
+  CellLayout layout_;
+  std::vector<double> open_volume_;
+  double cell_volume_ = 0;
+  std::vector<double> porosity_;
+  std::vector<double> sauter_;          ///< Sauter mean diameter per cell, m.
+  // Per particle, as of the last mapping.
+  std::vector<std::size_t> weight_start_;       ///< Particle i's weights: [start[i], start[i+1]).
+  std::vector<std::pair<int, double>> weights_; ///< (cell, fraction of the particle's volume).
+  std::vector<Vec3> species_gas_velocity_;      ///< Sum of u_i per species (last step), m/s.
+  std::vector<std::size_t> species_count_;      ///< Particles per species (last step).
+  Vec3 total_drag_ = Vec3::Zero();
+  CouplingTimes times_;
+};
+
+}  // namespace carom

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "core/roots.hpp"
+#include "pair_batch.hpp"
 #include "simulator.hpp"
 
 namespace carom {
@@ -31,6 +32,26 @@ Event Simulator::cell_crossing(std::int32_t i) const {
   const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
   const Vec3& r = p.position;
   const Vec3& v = p.velocity;
+  if (!has_gravity_) {
+    // Straight flight: only the face ahead on each axis can be crossed, at a time that
+    // first_upward_crossing(0, B, C) = -C / B would give (the same operations, fewer branches
+    // and no work for the face behind).
+    for (int k = 0; k < 3; ++k) {
+      double s;
+      if (v[k] > 0.0) {
+        if (grid_.is_outer_face(i, k, +1)) continue;
+        s = -(r[k] - upper[k]) / v[k];
+      } else if (v[k] < 0.0) {
+        if (grid_.is_outer_face(i, k, -1)) continue;
+        s = -(lower[k] - r[k]) / -v[k];
+      } else {
+        continue;
+      }
+      const double t = p.clock + (s > 0.0 ? s : 0.0);
+      if (t < best.time) best = Event{t, 2 * k + (v[k] > 0.0 ? 1 : 0), 0, EventKind::CellCrossing};
+    }
+    return best;
+  }
   const Vec3& g = system_.flight.gravity;
   for (int k = 0; k < 3; ++k) {
     if (!grid_.is_outer_face(i, k, +1)) {
@@ -45,42 +66,6 @@ Event Simulator::cell_crossing(std::int32_t i) const {
   return best;
 }
 
-namespace {
-/// Contact time of partner b with particle a (a's state already loaded): the same arithmetic
-/// as Simulator::pair_time, written for the prediction loop.
-template <bool kGravity, bool kImage>
-inline double pair_contact(const Vec3& position_a, const Vec3& velocity_a, double clock_a,
-                           double radius_a, const Vec3& position_b, const Vec3& velocity_b,
-                           double clock_b, double radius_b, const Vec3& gravity, const Domain& domain) {
-  // Scalar code on purpose: this is the innermost loop of the program, and plain doubles
-  // compile to about half the instructions of the Eigen expression (callgrind).
-  const double t_ref = clock_a > clock_b ? clock_a : clock_b;
-  const double dt_a = t_ref - clock_a, dt_b = t_ref - clock_b;
-  double dx = position_a.x() - position_b.x() + dt_a * velocity_a.x() - dt_b * velocity_b.x();
-  double dy = position_a.y() - position_b.y() + dt_a * velocity_a.y() - dt_b * velocity_b.y();
-  double dz = position_a.z() - position_b.z() + dt_a * velocity_a.z() - dt_b * velocity_b.z();
-  double ux = velocity_a.x() - velocity_b.x();
-  double uy = velocity_a.y() - velocity_b.y();
-  double uz = velocity_a.z() - velocity_b.z();
-  if constexpr (kGravity) {
-    const double half = 0.5 * (dt_a * dt_a - dt_b * dt_b), lag = dt_a - dt_b;
-    dx += half * gravity.x();
-    dy += half * gravity.y();
-    dz += half * gravity.z();
-    ux += lag * gravity.x();
-    uy += lag * gravity.y();
-    uz += lag * gravity.z();
-  }
-  if constexpr (kImage) {
-    Vec3 dr(dx, dy, dz);
-    domain.minimum_image(dr);
-    dx = dr.x();
-    dy = dr.y();
-    dz = dr.z();
-  }
-  return t_ref + sphere_contact_time(Vec3(dx, dy, dz), Vec3(ux, uy, uz), radius_a + radius_b);
-}
-}  // namespace
 
 template <bool kGravity>
 double Simulator::pair_time(std::int32_t i, std::int32_t j) const {
@@ -140,28 +125,43 @@ template <bool kGravity>
 std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
                                    double& best_time) const {
   const HotState& a = hot_[i];
-  const Vec3 position = a.position, velocity = a.velocity;
-  const double clock = a.clock, radius = a.radius;
-  const Vec3& gravity = system_.flight.gravity;
-  const Domain& domain = system_.domain;
+  const PairQuery query{a.position, a.velocity, a.clock, a.radius, system_.flight.gravity,
+                        system_.domain};
   const HotState* hot = hot_.data();
   const int level = grid_.level_of(i);
   const std::int32_t* next = grid_.next_array();
   std::int32_t best_partner = -1;
-  for (int c = 0; c < count; ++c) {
-    for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) {
-      if (j == i) continue;
-      const HotState& b = hot[j];
-      const double t =
-          wrapped ? pair_contact<kGravity, true>(position, velocity, clock, radius, b.position,
-                                                 b.velocity, b.clock, b.radius, gravity, domain)
-                  : pair_contact<kGravity, false>(position, velocity, clock, radius, b.position,
-                                                  b.velocity, b.clock, b.radius, gravity, domain);
-      if (t < best_time) {
-        best_time = t;
-        best_partner = j;
+  // Candidates are gathered into a batch (columns), their contact times computed four at a
+  // time, and the earliest picked in the order the cells were walked (as one at a time would).
+  PairBatch batch;
+  int c = 0;
+  std::int32_t j = -1;
+  for (;;) {
+    batch.count = 0;
+    while (batch.count < PairBatch::kCapacity) {
+      while (j < 0 && c < count) j = grid_.head(level, cells[c++]);
+      if (j < 0) break;
+      if (j != i) {
+        const HotState& b = hot[j];
+        batch.add(j, b.position, b.velocity, b.clock, b.radius);
+      }
+      j = next[j];
+    }
+    const int found = batch.count;
+    if (found == 0) break;
+    // Pad to whole vectors with partners that never touch (no relative velocity).
+    while (batch.count % 4 != 0) batch.add(-1, a.position, a.velocity, a.clock, 0.0);
+    if (wrapped)
+      contact_times<kGravity, true>(query, batch);
+    else
+      contact_times<kGravity, false>(query, batch);
+    for (int k = 0; k < found; ++k) {
+      if (batch.time[k] < best_time) {
+        best_time = batch.time[k];
+        best_partner = batch.partner[k];
       }
     }
+    if (found < PairBatch::kCapacity) break;
   }
   return best_partner;
 }

@@ -1,19 +1,21 @@
 // Event predictions for relax flights (gravity plus a linear drag frozen for one fluid step):
 // pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
 // (horizon_), where every particle is synchronised and predicted again.
+#include <algorithm>
+
 #include "core/relax_roots.hpp"
 #include "simulator.hpp"
 
 namespace carom {
 
-double Simulator::relax_pair_time(std::int32_t i, std::int32_t j) const {
+double Simulator::relax_pair_time(std::int32_t i, std::int32_t j, double limit) const {
   const HotState& a = hot_[i];
   const HotState& b = hot_[j];
   const RelaxFlight& fa = flights_[i];
   const RelaxFlight& fb = flights_[j];
   // Both states at the later of the two clocks.
   const double t_ref = a.clock > b.clock ? a.clock : b.clock;
-  const double horizon = horizon_ - t_ref;
+  const double horizon = std::min(horizon_, limit) - t_ref;
   if (!(horizon > 0.0)) return kNever;
   const double dt_a = t_ref - a.clock, dt_b = t_ref - b.clock;
   Vec3 dr = a.position - b.position;
@@ -31,10 +33,11 @@ double Simulator::relax_pair_time(std::int32_t i, std::int32_t j) const {
   return s == kNever ? kNever : t_ref + s;
 }
 
-double Simulator::relax_wall_time(std::int32_t i, const Wall& wall) const {
+double Simulator::relax_wall_time(std::int32_t i, const Wall& wall, double limit) const {
   const HotState& p = hot_[i];
   const RelaxFlight& f = flights_[i];
-  const double horizon = horizon_ - p.clock;
+  const double horizon = std::min(horizon_, limit) - p.clock;
+  if (!(horizon > 0.0)) return kNever;
   double s;
   if (wall.shape == Wall::Shape::Plane) {
     const double gap = (p.position - wall.point).dot(wall.normal) - p.radius;
@@ -80,15 +83,25 @@ void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
   }
   if (new_trajectory) crossings_[i] = relax_cell_crossing(i);
   const auto& counter = system_.particles.event_counter;
+  // Only events before the next crossing matter: a crossing predicts everything again (see
+  // cross_cell). Searching each candidate only up to the best time so far lets most of them
+  // stop at the first bound.
   Event best;
+  double limit = crossings_[i].time;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
-    const double t = relax_wall_time(i, system_.walls[w]);
-    if (t < best.time) best = Event{t, static_cast<std::int32_t>(w), 0, EventKind::Wall};
+    const double t = relax_wall_time(i, system_.walls[w], limit);
+    if (t < best.time) {
+      best = Event{t, static_cast<std::int32_t>(w), 0, EventKind::Wall};
+      limit = t;
+    }
   }
   auto consider = [&](std::int32_t j) {
     if (j == i) return;
-    const double t = relax_pair_time(i, j);
-    if (t < best.time) best = Event{t, j, counter[j], EventKind::Pair};
+    const double t = relax_pair_time(i, j, limit);
+    if (t < best.time) {
+      best = Event{t, j, counter[j], EventKind::Pair};
+      limit = t;
+    }
   };
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;

@@ -181,8 +181,9 @@ class Simulator {
 
   /// Relax flights: every prediction of particle i (cell crossing when new_trajectory).
   void predict_relax(std::int32_t i, bool new_trajectory);
-  double relax_pair_time(std::int32_t i, std::int32_t j) const;
-  double relax_wall_time(std::int32_t i, const Wall& wall) const;
+  /// Contact time of i and j if before `limit` (and the horizon), else kNever; s.
+  double relax_pair_time(std::int32_t i, std::int32_t j, double limit) const;
+  double relax_wall_time(std::int32_t i, const Wall& wall, double limit) const;
   Event relax_cell_crossing(std::int32_t i) const;
   /// Runs periodic action k at its time (synchronising first if it is a step).
   void fire_action(std::size_t k);

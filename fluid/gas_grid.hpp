@@ -28,8 +28,9 @@ class GasGrid {
                                     "2-D grid)");
       if (!std::isfinite(lower[a]) || !std::isfinite(upper[a]) || !(upper[a] > lower[a]))
         throw std::invalid_argument(std::string("gas grid: the box is empty or not finite along ") +
-                                    kAxis[a] + " (lower " + std::to_string(lower[a]) + " m, upper " +
-                                    std::to_string(upper[a]) + " m); upper must exceed lower");
+                                    kAxis[a] + " (lower " + std::to_string(lower[a]) +
+                                    " m, upper " + std::to_string(upper[a]) +
+                                    " m); upper must exceed lower");
     }
     if (static_cast<double>(cells[0]) * cells[1] * cells[2] > 1e8)
       throw std::invalid_argument("gas grid: more than 1e8 cells; use a coarser grid");

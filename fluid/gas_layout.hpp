@@ -1,11 +1,11 @@
 #pragma once
 /// Internal to the gas solver (fluid/gas_solver.hpp): the fixed geometry of the staggered grid —
 /// which cells border each face, open face areas, which faces are unknowns, face neighbours —
-/// the sparse-matrix patterns built from it once, and the solver's scratch. Not public API.
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
+/// and the sparse-matrix patterns built from it once. Not public API.
 #include <Eigen/SparseCore>
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "gas_grid.hpp"
@@ -19,8 +19,24 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 /// A cell's open fraction at or below this is solid (no gas), dimensionless.
 inline constexpr double kClosedFraction = 1e-12;
 
+/// Names of the six sides (x-, x+, y-, y+, z-, z+), as in scene files.
+inline constexpr const char* kSideNames[6] = {"x_low",  "x_high", "y_low",
+                                              "y_high", "z_low",  "z_high"};
+
+/// Throws std::invalid_argument("gas solver: " + message) unless `condition`.
+inline void require(bool condition, const std::string& message) {
+  if (!condition) throw std::invalid_argument("gas solver: " + message);
+}
+
+/// Number of face cells on a side normal to `axis` (the product of the two other cell counts).
+inline int side_face_cells(const std::array<int, 3>& cells, int axis) {
+  return cells[0] * cells[1] * cells[2] / cells[axis];
+}
+
 /// Direction index of a neighbour: 2 axis + (1 if towards +axis), the same as side indices.
-inline constexpr int direction(int axis, int sign) { return 2 * axis + (sign > 0 ? 1 : 0); }
+inline constexpr int direction(int axis, int sign) {
+  return 2 * axis + (sign > 0 ? 1 : 0);
+}
 
 struct GasLayout {
   GasLayout(const GasGrid& grid, const std::array<GasBoundary, 6>& boundaries);
@@ -34,11 +50,11 @@ struct GasLayout {
   std::vector<double> open_volume;                ///< Per cell, m^3.
 
   // Per axis, per face.
-  std::array<std::vector<int>, 3> left;            ///< Cell on the low side (-1: boundary).
-  std::array<std::vector<int>, 3> right;           ///< Cell on the high side (-1: boundary).
-  std::array<std::vector<double>, 3> area;         ///< Open area, m^2 (0: closed).
-  std::array<std::vector<int>, 3> unknown;         ///< Momentum unknown index (-1: fixed).
-  std::array<std::vector<int>, 3> unknown_face;    ///< Face of each momentum unknown.
+  std::array<std::vector<int>, 3> left;          ///< Cell on the low side (-1: boundary).
+  std::array<std::vector<int>, 3> right;         ///< Cell on the high side (-1: boundary).
+  std::array<std::vector<double>, 3> area;       ///< Open area, m^2 (0: closed).
+  std::array<std::vector<int>, 3> unknown;       ///< Momentum unknown index (-1: fixed).
+  std::array<std::vector<int>, 3> unknown_face;  ///< Face of each momentum unknown.
   std::array<std::vector<std::array<int, 6>>, 3> neighbour;  ///< Face of the same axis per
                                                              ///< direction (-1: beyond a side).
   /// Momentum matrix of each axis: pattern, and the value position of each unknown's diagonal
@@ -71,35 +87,6 @@ struct GasLayout {
   /// The cell across the face of `axis` on side `sign` of a cell (-1: a boundary; the cell itself
   /// on a periodic axis of one cell), with the face itself in `face`.
   int across(int axis, int sign, int cell, int& face) const;
-};
-
-/// Matrices, linear solvers and scratch arrays of the SIMPLE loop.
-struct GasWorkspace {
-  std::array<SparseMatrix, 3> momentum;          ///< Momentum matrix per axis (layout pattern).
-  std::array<Eigen::VectorXd, 3> rhs, solution;  ///< Per momentum unknown.
-  std::array<std::vector<double>, 3> diagonal;   ///< Relaxed a_P / alpha_u, kg/s.
-  std::array<std::vector<double>, 3> neighbour_sum;  ///< sum a_nb per unknown, kg/s.
-  // Per momentum unknown, fixed within a step: a_P and b without convection, pressure and
-  // relaxation; the pressure-force factor eps_f A_f; the diffusion D towards each direction.
-  std::array<std::vector<double>, 3> base_diagonal;   ///< kg/s.
-  std::array<std::vector<double>, 3> base_source;     ///< N.
-  std::array<std::vector<double>, 3> pressure_area;   ///< eps_f A_f, m^2.
-  std::array<std::vector<std::array<double, 6>>, 3> diffusion;  ///< kg/s.
-  std::array<std::vector<double>, 3> face_open_area;  ///< eps_f A_f per face (step), m^2.
-  std::array<std::vector<double>, 3> d;          ///< SIMPLE d = eps A / (a_P / alpha_u), m^3/(N s).
-  std::array<std::vector<double>, 3> flux;       ///< Volume flow eps u A per face, m^3/s.
-  std::array<std::vector<double>, 3> old_velocity;  ///< u at the start of the step, m/s.
-  std::array<std::vector<double>, 3> iterate;       ///< u at the start of the iteration, m/s.
-  SparseMatrix pressure;  ///< Pressure-correction matrix (layout pattern).
-  Eigen::VectorXd pressure_rhs, correction;
-  std::vector<double> residual;      ///< Continuity residual per cell, m^3/s.
-  std::vector<double> old_porosity;  ///< eps at the start of the step.
-  bool use_direct = true;
-  Eigen::SimplicialLDLT<SparseMatrix> direct;
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
-                           Eigen::IncompleteCholesky<double>>
-      iterative;
-  Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> momentum_solver;
 };
 
 }  // namespace carom::gas_detail

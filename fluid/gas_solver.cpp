@@ -5,26 +5,19 @@
 #include <stdexcept>
 #include <string>
 
-#include "gas_layout.hpp"
+#include "gas_workspace.hpp"
 
 namespace carom {
 
 using gas_detail::direction;
 using gas_detail::GasLayout;
-using gas_detail::SparseMatrix;
+using gas_detail::kSideNames;
+using gas_detail::require;
 
 namespace {
 
-const char* const kSideNames[6] = {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"};
-
-void require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument("gas solver: " + message);
-}
-
-/// Number of face cells on a side of axis a (the product of the two other cell counts).
-int side_face_cells(const std::array<int, 3>& cells, int axis) {
-  return cells[0] * cells[1] * cells[2] / cells[axis];
-}
+/// Iterations of one iterative linear solve at most (they take 5 to 50).
+constexpr int kMaxLinearIterations = 500;
 
 }  // namespace
 
@@ -85,16 +78,31 @@ GasSolver::GasSolver(GasGrid grid, GasProperties gas, std::array<GasBoundary, 6>
     work.diagonal[a].assign(m, 0.0);
     work.d[a].assign(m, 0.0);
     work.neighbour_sum[a].assign(m, 0.0);
+    work.base_diagonal[a].assign(m, 0.0);
+    work.base_source[a].assign(m, 0.0);
+    work.pressure_area[a].assign(m, 0.0);
+    work.diffusion[a].assign(m, {});
+    work.face_porosity[a].assign(layout.face_count[a], 1.0);
+    work.flow_area[a].assign(layout.face_count[a], 0.0);
     work.flux[a].assign(layout.face_count[a], 0.0);
   }
   work.pressure = layout.pressure_pattern;
   const int cells = grid_.count();
+  const auto& n = grid_.cells();
+  const bool flat = n[0] == 1 || n[1] == 1 || n[2] == 1;  // 1-D or 2-D: little fill-in.
   work.use_direct = options_.pressure_solver == GasPressureSolver::Direct ||
                     (options_.pressure_solver == GasPressureSolver::Automatic &&
-                     cells <= options_.direct_cell_limit);
-  if (work.use_direct && work.pressure.rows() > 0) work.direct.analyzePattern(work.pressure);
-  work.iterative.setTolerance(options_.linear_tolerance);
+                     (flat || cells <= options_.direct_cell_limit));
+  if (work.pressure.rows() > 0) {
+    std::vector<std::array<int, 3>> coordinates;
+    for (int c : layout.active_cell) coordinates.push_back(grid_.coordinates(c));
+    if (work.use_direct)
+      work.direct.analyzePattern(work.pressure);
+    else
+      work.multigrid.analyze(work.pressure, coordinates);
+  }
   work.momentum_solver.setTolerance(options_.linear_tolerance);
+  work.momentum_solver.setMaxIterations(kMaxLinearIterations);
   work.residual.assign(cells, 0.0);
 
   // Initial pressure: hydrostatic from the first outlet (along its axis), else 0.
@@ -114,45 +122,15 @@ GasSolver::~GasSolver() = default;
 GasSolver::GasSolver(GasSolver&&) noexcept = default;
 GasSolver& GasSolver::operator=(GasSolver&&) noexcept = default;
 
-std::array<int, 3> GasSolver::face_counts(int axis) const { return layout_->face_dims[axis]; }
-
-void GasSolver::set_inlet_velocity(int side, double superficial_velocity) {
-  require(side >= 0 && side < 6, "side index " + std::to_string(side) + " is not in 0..5");
-  require(boundaries_[side].kind == GasBoundaryKind::Inlet,
-          std::string("side ") + kSideNames[side] + " is no inlet");
-  require(std::isfinite(superficial_velocity),
-          std::string("inlet velocity on ") + kSideNames[side] + " is not finite");
-  boundaries_[side].superficial_velocity = superficial_velocity;
-}
-
-void GasSolver::set_inlet_profile(int side, std::vector<double> profile) {
-  require(side >= 0 && side < 6, "side index " + std::to_string(side) + " is not in 0..5");
-  require(boundaries_[side].kind == GasBoundaryKind::Inlet,
-          std::string("side ") + kSideNames[side] + " is no inlet");
-  const int expected = side_face_cells(grid_.cells(), side / 2);
-  require(profile.empty() || static_cast<int>(profile.size()) == expected,
-          std::string("the jet profile of ") + kSideNames[side] + " has " +
-              std::to_string(profile.size()) + " values; the side has " +
-              std::to_string(expected) + " face cells");
-  for (double v : profile)
-    require(std::isfinite(v), std::string("jet profile of ") + kSideNames[side] + " not finite");
-  boundaries_[side].jet_profile = std::move(profile);
-}
-
-void GasSolver::set_uniform_velocity(const Vec3& u) {
-  for (int a = 0; a < 3; ++a)
-    for (int f : layout_->unknown_face[a]) velocity_[a][f] = u[a];
-}
-
 void GasSolver::check_inputs(const StepInputs& in) const {
   const auto cells = static_cast<std::size_t>(grid_.count());
   require(std::isfinite(in.dt) && in.dt > 0.0,
           "time step " + std::to_string(in.dt) + " s must be positive");
-  require(in.porosity.size() == cells && in.beta.size() == cells &&
-              in.solid_velocity.size() == cells,
-          "porosity, beta and solid velocity need one value per cell (" + std::to_string(cells) +
-              "); got " + std::to_string(in.porosity.size()) + ", " +
-              std::to_string(in.beta.size()) + ", " + std::to_string(in.solid_velocity.size()));
+  require(
+      in.porosity.size() == cells && in.beta.size() == cells && in.solid_velocity.size() == cells,
+      "porosity, beta and solid velocity need one value per cell (" + std::to_string(cells) +
+          "); got " + std::to_string(in.porosity.size()) + ", " + std::to_string(in.beta.size()) +
+          ", " + std::to_string(in.solid_velocity.size()));
   for (std::size_t c = 0; c < cells; ++c) {
     require(in.porosity[c] > 0.0 && in.porosity[c] <= 1.0,
             "porosity " + std::to_string(in.porosity[c]) + " of cell " + std::to_string(c) +
@@ -195,14 +173,11 @@ void GasSolver::set_fixed_faces(const StepInputs& in) {
   }
 }
 
-void GasSolver::compute_fluxes(const StepInputs& in) {
-  const GasLayout& layout = *layout_;
+void GasSolver::compute_fluxes() {
+  gas_detail::GasWorkspace& work = *work_;
   for (int a = 0; a < 3; ++a)
-    for (int f = 0; f < layout.face_count[a]; ++f)
-      work_->flux[a][f] = layout.area[a][f] == 0.0
-                              ? 0.0
-                              : face_porosity(a, f, in.porosity) * velocity_[a][f] *
-                                    layout.area[a][f];
+    for (std::size_t f = 0; f < velocity_[a].size(); ++f)
+      work.flux[a][f] = work.flow_area[a][f] * velocity_[a][f];
 }
 
 double GasSolver::continuity_imbalance(const StepInputs& in) {
@@ -220,8 +195,7 @@ double GasSolver::continuity_imbalance(const StepInputs& in) {
       work.residual[c] = 0.0;
       continue;
     }
-    const double storage =
-        (in.porosity[c] - work.old_porosity[c]) * layout.open_volume[c] / in.dt;
+    const double storage = (in.porosity[c] - work.old_porosity[c]) * layout.open_volume[c] / in.dt;
     double r = storage;
     for (int a = 0; a < 3; ++a)
       r += work.flux[a][layout.plus_face(a, c)] - work.flux[a][layout.minus_face(a, c)];
@@ -233,8 +207,7 @@ double GasSolver::continuity_imbalance(const StepInputs& in) {
 }
 
 GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
-                              std::span<const double> beta,
-                              std::span<const Vec3> solid_velocity) {
+                              std::span<const double> beta, std::span<const Vec3> solid_velocity) {
   const StepInputs in{dt, porosity, beta, solid_velocity};
   check_inputs(in);
   const GasLayout& layout = *layout_;
@@ -245,24 +218,33 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
     work.old_porosity.assign(porosity.begin(), porosity.end());
   work.old_velocity = velocity_;
   set_fixed_faces(in);
+  for (int a = 0; a < 3; ++a)
+    for (int f = 0; f < layout.face_count[a]; ++f) {
+      work.face_porosity[a][f] = face_porosity(a, f, porosity);
+      work.flow_area[a][f] = work.face_porosity[a][f] * layout.area[a][f];
+    }
+  for (int a = 0; a < 3; ++a) prepare_momentum(a, in);
 
   GasStepReport report;
   const double alpha_p = options_.pressure_relaxation;
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     report.iterations = iteration;
     // 1. Momentum predictor with the current pressure (convecting fluxes of the last iterate).
-    compute_fluxes(in);
+    compute_fluxes();
     work.iterate = velocity_;
     for (int a = 0; a < 3; ++a) {
       if (layout.unknown_face[a].empty()) continue;
-      assemble_momentum(a, in);
-      // Guess: the last iterate (a function of the state alone, so restores are exact).
+      assemble_momentum(a);
+      // Solve for the increment from the last iterate, so that the relative tolerance of the
+      // linear solve applies to the change (which vanishes as SIMPLE converges).
+      Eigen::VectorXd& x = work.solution[a];
       for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u)
-        work.solution[a][u] = velocity_[a][layout.unknown_face[a][u]];
+        x[u] = velocity_[a][layout.unknown_face[a][u]];
+      work.rhs[a] -= work.momentum[a] * x;
       work.momentum_solver.compute(work.momentum[a]);
-      work.solution[a] = work.momentum_solver.solveWithGuess(work.rhs[a], work.solution[a]);
+      x += work.momentum_solver.solve(work.rhs[a]);
       for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u)
-        velocity_[a][layout.unknown_face[a][u]] = work.solution[a][u];
+        velocity_[a][layout.unknown_face[a][u]] = x[u];
     }
     double speed = options_.velocity_floor, change = 0.0;
     for (int a = 0; a < 3; ++a)
@@ -272,25 +254,24 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
       }
     report.velocity_change = change / speed;
     // 2. Mass imbalance of the predicted velocities: the right side of the correction.
-    compute_fluxes(in);
+    compute_fluxes();
     report.predicted_mass_imbalance = continuity_imbalance(in);
     // 3. Pressure correction (matrix and factorisation once per step: d frozen).
     if (work.pressure.rows() > 0) {
       if (iteration == 1) {
         for (int a = 0; a < 3; ++a)
           for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u) {
-            const int f = layout.unknown_face[a][u];
             work.d[a][u] =
-                face_porosity(a, f, porosity) * layout.area[a][f] /
-                (work.diagonal[a][u] - (options_.consistent ? work.neighbour_sum[a][u] : 0.0));
+                work.pressure_area[a][u] /
+                (work.diagonal[a][u] - (options_.simplec ? work.neighbour_sum[a][u] : 0.0));
           }
-        assemble_pressure_correction(in);
+        assemble_pressure_correction();
         if (work.use_direct) {
           work.direct.factorize(work.pressure);
           if (work.direct.info() != Eigen::Success)
             throw std::runtime_error("gas solver: pressure-correction factorisation failed");
         } else {
-          work.iterative.compute(work.pressure);
+          work.multigrid.factorize(work.pressure);
         }
       }
       work.pressure_rhs.resize(static_cast<Eigen::Index>(layout.active_cell.size()));
@@ -299,15 +280,16 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
       if (work.use_direct)
         work.correction = work.direct.solve(work.pressure_rhs);
       else
-        work.correction = work.iterative.solve(work.pressure_rhs);
+        work.multigrid.solve(work.pressure_rhs, work.correction, options_.linear_tolerance,
+                             kMaxLinearIterations);
       auto correction_at = [&](int cell) {
         return cell >= 0 && layout.active[cell] >= 0 ? work.correction[layout.active[cell]] : 0.0;
       };
       for (int a = 0; a < 3; ++a)
         for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u) {
           const int f = layout.unknown_face[a][u];
-          velocity_[a][f] -= work.d[a][u] * (correction_at(layout.right[a][f]) -
-                                             correction_at(layout.left[a][f]));
+          velocity_[a][f] -=
+              work.d[a][u] * (correction_at(layout.right[a][f]) - correction_at(layout.left[a][f]));
         }
       for (std::size_t u = 0; u < layout.active_cell.size(); ++u)
         pressure_[layout.active_cell[u]] += alpha_p * work.correction[u];
@@ -320,7 +302,7 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
   }
 
   // Final state: continuity of the corrected velocities and the flows through the sides.
-  compute_fluxes(in);
+  compute_fluxes();
   mass_imbalance_ = continuity_imbalance(in);
   report.mass_imbalance = mass_imbalance_;
   outflow_.fill(0.0);
@@ -340,7 +322,7 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
   return report;
 }
 
-void GasSolver::assemble_pressure_correction(const StepInputs& in) {
+void GasSolver::assemble_pressure_correction() {
   // Continuity of cell c with u_f = u*_f - d_f (p'_R - p'_L): sum over its faces of
   // k_f (p'_c - p'_across) = -residual_c, k_f = eps_f A_f d_f (p' = 0 on an outlet).
   const GasLayout& layout = *layout_;
@@ -355,86 +337,12 @@ void GasSolver::assemble_pressure_correction(const StepInputs& in) {
         const int other = layout.across(a, sign, c, face);
         const int unknown = layout.unknown[a][face];
         if (unknown < 0 || other == c) continue;
-        const double k =
-            face_porosity(a, face, in.porosity) * layout.area[a][face] * work.d[a][unknown];
+        const double k = work.flow_area[a][face] * work.d[a][unknown];
         values[layout.pressure_slot[u][0]] += k;
         const int slot = layout.pressure_slot[u][1 + direction(a, sign)];
         if (slot >= 0) values[slot] -= k;
       }
   }
-}
-
-bool GasSolver::face_pressure_gradient(int axis, int face, double& gradient) const {
-  const GasLayout& layout = *layout_;
-  if (layout.unknown[axis][face] < 0) return false;
-  const int left = layout.left[axis][face], right = layout.right[axis][face];
-  const double h = layout.spacing[axis];
-  if (left >= 0 && right >= 0)
-    gradient = (pressure_[right] - pressure_[left]) / h;
-  else if (left >= 0)
-    gradient = (boundaries_[2 * axis + 1].pressure - pressure_[left]) / (0.5 * h);
-  else
-    gradient = (pressure_[right] - boundaries_[2 * axis].pressure) / (0.5 * h);
-  return true;
-}
-
-Vec3 GasSolver::cell_velocity(int cell) const {
-  Vec3 u;
-  for (int a = 0; a < 3; ++a)
-    u[a] = 0.5 * (velocity_[a][layout_->minus_face(a, cell)] +
-                  velocity_[a][layout_->plus_face(a, cell)]);
-  return u;
-}
-
-Vec3 GasSolver::pressure_gradient(int cell) const {
-  Vec3 gradient;
-  for (int a = 0; a < 3; ++a) {
-    double low = 0.0, high = 0.0;
-    const bool has_low = face_pressure_gradient(a, layout_->minus_face(a, cell), low);
-    const bool has_high = face_pressure_gradient(a, layout_->plus_face(a, cell), high);
-    if (has_low && has_high)
-      gradient[a] = 0.5 * (low + high);
-    else if (has_low || has_high)
-      gradient[a] = has_low ? low : high;
-    else
-      gradient[a] = gas_.density * gravity_[a];
-  }
-  return gradient;
-}
-
-double GasSolver::boundary_outflow(int side) const { return outflow_.at(side); }
-
-std::vector<double> GasSolver::save_state() const {
-  std::vector<double> state;
-  for (int a = 0; a < 3; ++a) state.insert(state.end(), velocity_[a].begin(), velocity_[a].end());
-  state.insert(state.end(), pressure_.begin(), pressure_.end());
-  if (has_old_porosity_)
-    state.insert(state.end(), old_porosity_.begin(), old_porosity_.end());
-  else
-    state.insert(state.end(), pressure_.size(), 1.0);
-  state.push_back(has_old_porosity_ ? 1.0 : 0.0);
-  return state;
-}
-
-void GasSolver::restore_state(std::span<const double> state) {
-  const std::size_t cells = pressure_.size();
-  const std::size_t expected =
-      velocity_[0].size() + velocity_[1].size() + velocity_[2].size() + 2 * cells + 1;
-  require(state.size() == expected, "a saved gas state of " + std::to_string(state.size()) +
-                                        " values does not fit this grid (" +
-                                        std::to_string(expected) + " expected)");
-  auto next = state.begin();
-  for (int a = 0; a < 3; ++a) {
-    std::copy(next, next + velocity_[a].size(), velocity_[a].begin());
-    next += velocity_[a].size();
-  }
-  std::copy(next, next + cells, pressure_.begin());
-  next += cells;
-  has_old_porosity_ = state.back() != 0.0;
-  if (has_old_porosity_)
-    old_porosity_.assign(next, next + cells);
-  else
-    old_porosity_.clear();
 }
 
 }  // namespace carom

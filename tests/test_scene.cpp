@@ -148,14 +148,14 @@ TEST(SceneErrors, FlightAndGasMustFit) {
   expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[flight]\nmodel = \"ballistic\"\n",
                {"bad.toml:14", "ignores the gas", "\"relax\"", "\"kick\""});
   expect_error(kBase + "[gas]\ncoupling = \"one_way\"\n", {"gas.cells", "missing"});
-  expect_error(kBase + "[gas]\ncells = [4, 0, 4]\n", {"bad.toml:12", "gas.cells", "[1, 1000000]"});
+  expect_error(kBase + "[gas]\ncells = [4, 0, 4]\n", {"bad.toml:12", "gas.cells", "[1, 1e+06]"});
   expect_error(kBase + "[gas]\ncells = [4, 1.5, 4]\n", {"bad.toml:12", "whole numbers"});
   expect_error(kBase + "[gas]\ncells = [4, 4, 4]\ntime_step = -1e-4\n", {"bad.toml:13", "gas.time_step", "(0, inf)"});
-  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\ndrag = \"ergun2\"\n", {"bad.toml:13", "gas.drag", "did you mean 'ergun'"});
+  expect_error(kBase + "[gas]\ncells = [4, 4, 4]\ndrag = \"ergun2\"\n", {"bad.toml:13", "gas.drag", "did you mean \"ergun\""});
   expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[gas.boundaries]\nz_low = \"inlet\"\n",
                {"bad.toml:14", "gas.boundaries.z_low", "needs a velocity"});
   expect_error(kBase + "[gas]\ncells = [4, 4, 4]\n[gas.boundaries]\nz_lo = \"wall\"\n",
-               {"unknown key 'gas.boundaries.z_lo'", "did you mean 'z_low'"});
+               {"unknown key 'gas.boundaries.z_lo'", "did you mean 'gas.boundaries.z_low'"});
   expect_error(replace(kBase, "min = [0.0, 0.0, 0.0]", "min = [0.0, 0.0, 0.0]\nperiodic = [\"x\"]") +
                    "[gas]\ncells = [4, 4, 4]\n[gas.boundaries]\nx_low = \"wall\"\n",
                {"gas.boundaries.x_low", "periodic axis"});

@@ -1,0 +1,123 @@
+// The gas solver's inputs between steps, fields at cells and state for checkpoints
+// (fluid/gas_solver.hpp).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "gas_solver.hpp"
+#include "gas_workspace.hpp"
+
+namespace carom {
+
+using gas_detail::GasLayout;
+using gas_detail::kSideNames;
+using gas_detail::require;
+
+std::array<int, 3> GasSolver::face_counts(int axis) const {
+  return layout_->face_dims[axis];
+}
+
+void GasSolver::set_inlet_velocity(int side, double superficial_velocity) {
+  require(side >= 0 && side < 6, "side index " + std::to_string(side) + " is not in 0..5");
+  require(boundaries_[side].kind == GasBoundaryKind::Inlet,
+          std::string("side ") + kSideNames[side] + " is no inlet");
+  require(std::isfinite(superficial_velocity),
+          std::string("inlet velocity on ") + kSideNames[side] + " is not finite");
+  boundaries_[side].superficial_velocity = superficial_velocity;
+}
+
+void GasSolver::set_inlet_profile(int side, std::vector<double> profile) {
+  require(side >= 0 && side < 6, "side index " + std::to_string(side) + " is not in 0..5");
+  require(boundaries_[side].kind == GasBoundaryKind::Inlet,
+          std::string("side ") + kSideNames[side] + " is no inlet");
+  const int expected = gas_detail::side_face_cells(grid_.cells(), side / 2);
+  require(profile.empty() || static_cast<int>(profile.size()) == expected,
+          std::string("the jet profile of ") + kSideNames[side] + " has " +
+              std::to_string(profile.size()) + " values; the side has " + std::to_string(expected) +
+              " face cells");
+  for (double v : profile)
+    require(std::isfinite(v), std::string("jet profile of ") + kSideNames[side] + " not finite");
+  boundaries_[side].jet_profile = std::move(profile);
+}
+
+void GasSolver::set_uniform_velocity(const Vec3& u) {
+  for (int a = 0; a < 3; ++a)
+    for (int f : layout_->unknown_face[a]) velocity_[a][f] = u[a];
+}
+
+bool GasSolver::face_pressure_gradient(int axis, int face, double& gradient) const {
+  const GasLayout& layout = *layout_;
+  if (layout.unknown[axis][face] < 0) return false;
+  const int left = layout.left[axis][face], right = layout.right[axis][face];
+  const double h = layout.spacing[axis];
+  if (left >= 0 && right >= 0)
+    gradient = (pressure_[right] - pressure_[left]) / h;
+  else if (left >= 0)
+    gradient = (boundaries_[2 * axis + 1].pressure - pressure_[left]) / (0.5 * h);
+  else
+    gradient = (pressure_[right] - boundaries_[2 * axis].pressure) / (0.5 * h);
+  return true;
+}
+
+Vec3 GasSolver::cell_velocity(int cell) const {
+  Vec3 u;
+  for (int a = 0; a < 3; ++a)
+    u[a] = 0.5 *
+           (velocity_[a][layout_->minus_face(a, cell)] + velocity_[a][layout_->plus_face(a, cell)]);
+  return u;
+}
+
+Vec3 GasSolver::pressure_gradient(int cell) const {
+  Vec3 gradient;
+  for (int a = 0; a < 3; ++a) {
+    double low = 0.0, high = 0.0;
+    const bool has_low = face_pressure_gradient(a, layout_->minus_face(a, cell), low);
+    const bool has_high = face_pressure_gradient(a, layout_->plus_face(a, cell), high);
+    if (has_low && has_high)
+      gradient[a] = 0.5 * (low + high);
+    else if (has_low || has_high)
+      gradient[a] = has_low ? low : high;
+    else
+      gradient[a] = gas_.density * gravity_[a];
+  }
+  return gradient;
+}
+
+double GasSolver::boundary_outflow(int side) const {
+  return outflow_.at(side);
+}
+
+std::vector<double> GasSolver::save_state() const {
+  std::vector<double> state;
+  for (int a = 0; a < 3; ++a) state.insert(state.end(), velocity_[a].begin(), velocity_[a].end());
+  state.insert(state.end(), pressure_.begin(), pressure_.end());
+  if (has_old_porosity_)
+    state.insert(state.end(), old_porosity_.begin(), old_porosity_.end());
+  else
+    state.insert(state.end(), pressure_.size(), 1.0);
+  state.push_back(has_old_porosity_ ? 1.0 : 0.0);
+  return state;
+}
+
+void GasSolver::restore_state(std::span<const double> state) {
+  const std::size_t cells = pressure_.size();
+  const std::size_t expected =
+      velocity_[0].size() + velocity_[1].size() + velocity_[2].size() + 2 * cells + 1;
+  require(state.size() == expected, "a saved gas state of " + std::to_string(state.size()) +
+                                        " values does not fit this grid (" +
+                                        std::to_string(expected) + " expected)");
+  auto next = state.begin();
+  for (int a = 0; a < 3; ++a) {
+    std::copy(next, next + velocity_[a].size(), velocity_[a].begin());
+    next += velocity_[a].size();
+  }
+  std::copy(next, next + cells, pressure_.begin());
+  next += cells;
+  has_old_porosity_ = state.back() != 0.0;
+  if (has_old_porosity_)
+    old_porosity_.assign(next, next + cells);
+  else
+    old_porosity_.clear();
+}
+
+}  // namespace carom

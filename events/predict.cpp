@@ -32,26 +32,6 @@ Event Simulator::cell_crossing(std::int32_t i) const {
   const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
   const Vec3& r = p.position;
   const Vec3& v = p.velocity;
-  if (!has_gravity_) {
-    // Straight flight: only the face ahead on each axis can be crossed, at a time that
-    // first_upward_crossing(0, B, C) = -C / B would give (the same operations, fewer branches
-    // and no work for the face behind).
-    for (int k = 0; k < 3; ++k) {
-      double s;
-      if (v[k] > 0.0) {
-        if (grid_.is_outer_face(i, k, +1)) continue;
-        s = -(r[k] - upper[k]) / v[k];
-      } else if (v[k] < 0.0) {
-        if (grid_.is_outer_face(i, k, -1)) continue;
-        s = -(lower[k] - r[k]) / -v[k];
-      } else {
-        continue;
-      }
-      const double t = p.clock + (s > 0.0 ? s : 0.0);
-      if (t < best.time) best = Event{t, 2 * k + (v[k] > 0.0 ? 1 : 0), 0, EventKind::CellCrossing};
-    }
-    return best;
-  }
   const Vec3& g = system_.flight.gravity;
   for (int k = 0; k < 3; ++k) {
     if (!grid_.is_outer_face(i, k, +1)) {

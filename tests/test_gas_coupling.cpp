@@ -127,3 +127,67 @@ TEST(KickFlights, UnstableStepIsDetectedAndExplained) {
 
 }  // namespace
 }  // namespace carom
+
+namespace carom {
+namespace {
+
+// A bed of 800 glass beads (1 mm) in a pseudo-2-D column (16 mm wide, 4 mm deep, periodic in
+// depth) fluidized at U = 0.8 m/s (1.4 U_mf), averaged over 0.2 s (a sample every 1 ms):
+//  - momentum balance of the bed: the gas pressure drop (less the gas's own hydrostatic part)
+//    times the area, plus the forces of the distributor and the side walls on the beads, minus
+//    the rate of change of the bed's momentum, equals the buoyant weight W = sum m g (1 -
+//    rho_g/rho_p) within 3 % (the pressure drop is sampled, the wall impulses are exact sums:
+//    the sampling error of the mean with ~25 Pa fluctuations is ~2 %);
+//  - the pressure drop alone carries W/A to within 8 %: this hard-sphere bed (TC model) in a
+//    narrow column oscillates as a plug and rests on the distributor part of the time, which
+//    then carries ~6 % of the weight (printed). Reaching Delta p = W/A to 2 % needs a bed that
+//    never touches the distributor (wider and deeper beds): see the closing note of issue 4.
+// The pressure at the inlet face is extrapolated from the two lowest cells (2 mm each), which
+// lie inside the bed (11 mm deep at rest), so the extrapolation is exact for a uniform gradient.
+TEST(FluidizedBed, PressureDropCarriesTheBuoyantWeight) {
+  CoupledRun run = start("fluidized_bed.toml",
+                         {"species.glass.fill.count=800",
+                          "domain.max=[0.016, 0.004, 0.04]", "regions.bed.max=[0.016, 0.004, 0.025]",
+                          "gas.cells=[8, 1, 20]",
+                          "gas.boundaries.z_low.velocity=0.8", "gas.boundaries.z_low.ramp_time=0.02",
+                          "time.end=0.3"});
+  const System& system = run.sim->system();
+  const double rho_g = 1.2, g = 9.81, area = 0.016 * 0.004, height = 0.04, window = 0.2;
+  double weight = 0.0;
+  for (std::size_t i = 0; i < run.sim->particle_count(); ++i)
+    weight += system.particles.mass[i] * g * (1.0 - rho_g / 2500.0);
+  auto bed_momentum = [&] {
+    double p = 0.0;
+    for (std::size_t i = 0; i < run.sim->particle_count(); ++i)
+      p += system.particles.mass[i] * run.sim->velocity(i).z();
+    return p;
+  };
+  auto wall_force_on_beads = [&] {  // cumulative impulse of the walls on the beads, z, N s
+    double sum = 0.0;
+    for (const Vec3& impulse : run.sim->statistics().wall_impulse) sum -= impulse.z();
+    return sum;
+  };
+  run.sim->run_until(0.1);
+  const double momentum0 = bed_momentum(), walls0 = wall_force_on_beads();
+  std::vector<double> drops;
+  for (int k = 1; k <= 200; ++k) {
+    run.sim->run_until(0.1 + window * k / 200.0);
+    drops.push_back(run.gas->pressure_drop() - rho_g * g * height);
+  }
+  double mean = 0.0;
+  for (double d : drops) mean += d / drops.size();
+  double variance = 0.0;
+  for (double d : drops) variance += (d - mean) * (d - mean) / (drops.size() - 1);
+  const double walls = (wall_force_on_beads() - walls0) / window;
+  const double acceleration = (bed_momentum() - momentum0) / window;
+  const double balance = (mean * area + walls - acceleration) / weight;
+  std::printf("pressure drop %.2f Pa (std %.2f Pa), W/A %.2f Pa: ratio %.4f; walls carry %.4f of W, "
+              "bed momentum change %.4f of W; balance %.4f\n",
+              mean, std::sqrt(variance), weight / area, mean * area / weight, walls / weight,
+              acceleration / weight, balance);
+  EXPECT_NEAR(balance, 1.0, 0.03);
+  EXPECT_NEAR(mean * area / weight, 1.0, 0.08);
+}
+
+}  // namespace
+}  // namespace carom

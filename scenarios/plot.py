@@ -228,6 +228,19 @@ def buoyant_weight_per_area(run):
     return weight / area
 
 
+def measured_minimum_fluidization(inlet, drop, weight):
+    """U_mf of a ramp: where the packed-bed branch (Ergun's form a U + b U^2, least squares over
+    the points below 70 % of W/A) reaches the plateau W/A. None without such points."""
+    packed = (inlet > 0) & (drop < 0.7 * weight)
+    if packed.sum() < 5 or drop.max() < 0.9 * weight:
+        return None
+    u, p = inlet[packed], drop[packed]
+    (a, b), *_ = np.linalg.lstsq(np.column_stack([u, u * u]), p, rcond=None)
+    if b <= 0:
+        return weight / a if a > 0 else None
+    return (-a + np.sqrt(a * a + 4 * b * weight)) / (2 * b)
+
+
 def plot_gas(run, path):
     series = run["timeseries"]
     t = series["time"][()]
@@ -244,8 +257,19 @@ def plot_gas(run, path):
     twin.set_ylabel("inlet velocity $U$ (m/s)", color=COLOURS[1])
     twin.spines["right"].set_visible(True)
     left.legend(loc="lower right")
-    right.plot(inlet, drop, ".", ms=2, color=COLOURS[0])
+    right.plot(inlet, drop, ".", ms=2, color=COLOURS[0], label="carom")
     right.axhline(weight, color="0.3", ls="--", lw=0.8)
+    measured = measured_minimum_fluidization(inlet, drop, weight)
+    if measured is not None:
+        right.axvline(measured, color=COLOURS[0], lw=0.8, label=f"measured $U_{{mf}}$ = {measured:.3f} m/s")
+    attrs = run["gas"].attrs
+    if "closure_minimum_fluidization" in attrs:
+        right.axvline(attrs["closure_minimum_fluidization"], color=COLOURS[2], ls=":", lw=1.0,
+                      label=f"closure at $\\varepsilon_{{mf}}$ = 0.4: "
+                            f"{attrs['closure_minimum_fluidization']:.3f} m/s")
+        right.axvline(attrs["wen_yu_minimum_fluidization"], color=COLOURS[3], ls="-.", lw=1.0,
+                      label=f"Wen-Yu: {attrs['wen_yu_minimum_fluidization']:.3f} m/s")
+    right.legend(loc="lower right", fontsize=7)
     right.set_xlabel("inlet superficial velocity $U$ (m/s)")
     right.set_ylabel(r"$\Delta p$ (Pa)")
     right.set_title(f"closure: {text(run['gas/closure'][()])}", fontsize=9)

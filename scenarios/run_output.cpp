@@ -14,6 +14,7 @@
 
 #include "carom/version.hpp"
 #include "core/hdf5.hpp"
+#include "fluid/drag.hpp"
 #include "scenarios/output_support.hpp"
 
 namespace carom {
@@ -177,6 +178,20 @@ RunFile::RunFile(const std::string& path, const RunInfo& info, const System& sys
     group.set_attribute("density", gas->settings().density);
     group.set_attribute("viscosity", gas->settings().viscosity);
     group.set_attribute("time_step", gas->settings().time_step);
+    // Minimum fluidization of the first species: the closure's own prediction for a bed at
+    // eps_mf = 0.4 and the Wen-Yu correlation (superficial velocities, m/s).
+    if (!system.species.empty() && system.flight.has_gravity()) {
+      const Species& s = system.species[0];
+      const double g = system.flight.gravity.norm();
+      DragInput in;
+      in.diameter = in.sauter_diameter = s.diameter;
+      in.gas_density = gas->settings().density;
+      in.gas_viscosity = gas->settings().viscosity;
+      in.particle_density = s.density;
+      const DragClosure closure(gas->settings().closure, gas->settings().fluidization_porosity, g);
+      group.set_attribute("closure_minimum_fluidization", closure.minimum_fluidization_velocity(in, 0.4));
+      group.set_attribute("wen_yu_minimum_fluidization", wen_yu_minimum_fluidization_velocity(in, g));
+    }
     for (const auto& [name, columns] : kGasSeries) series.create_extendible<double>(name, columns);
   }
   d.file.flush();

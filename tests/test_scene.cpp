@@ -75,7 +75,10 @@ TEST_P(ShippedScenes, ParseBuildAndValidate) {
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
                          ::testing::Values(ShippedScene{"elastic_gas.toml", 990}, ShippedScene{"haff_cooling.toml", 1528},
                                            ShippedScene{"bidisperse_gas.toml", 1049},
-                                           ShippedScene{"settling_column.toml", 400}),
+                                           ShippedScene{"settling_column.toml", 400},
+                                           ShippedScene{"settling_sphere.toml", 1}, ShippedScene{"packed_bed.toml", 1345},
+                                           ShippedScene{"fluidized_bed.toml", 400}, ShippedScene{"column_1d.toml", 300},
+                                           ShippedScene{"bubbling_bed.toml", 2000}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));

@@ -30,8 +30,8 @@ inline double relax_phi2(double x) {
 /// This form is exact for rate = 0 too (then it is the ballistic parabola), and has no
 /// cancellation for small rate s.
 struct RelaxFlight {
-  double rate = 0.0;            ///< 1/tau, 1/s.
-  Vec3 drive = Vec3::Zero();    ///< drive, m/s^2.
+  double rate = 0.0;          ///< 1/tau, 1/s.
+  Vec3 drive = Vec3::Zero();  ///< drive, m/s^2.
 
   /// The acceleration at velocity v, m/s^2.
   Vec3 acceleration(const Vec3& v) const { return drive - rate * v; }

@@ -70,8 +70,8 @@ Event Simulator::relax_cell_crossing(std::int32_t i) const {
   for (int k = 0; k < 3; ++k) {
     // The gap to the upper face closes at -v_k; its "drive" is -drive_k (see relax_roots.hpp).
     if (!grid_.is_outer_face(i, k, +1)) {
-      const double s = relax_gap_closing_time(upper[k] - p.position[k], -p.velocity[k],
-                                              -f.drive[k], f.rate, horizon);
+      const double s = relax_gap_closing_time(upper[k] - p.position[k], -p.velocity[k], -f.drive[k],
+                                              f.rate, horizon);
       if (s != kNever && p.clock + s < best.time)
         best = Event{p.clock + s, 2 * k + 1, 0, EventKind::CellCrossing};
     }

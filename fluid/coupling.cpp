@@ -20,7 +20,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
                          const std::vector<Wall>& walls, const Vec3& gravity,
                          std::vector<double> species_density)
-    : settings_(settings), domain_(domain), gravity_(gravity),
+    : settings_(settings),
+      domain_(domain),
+      gravity_(gravity),
       species_density_(std::move(species_density)) {
   layout_ = CellLayout::over(domain, settings.cells);
   open_volume_ = carom::open_volume(layout_, walls);
@@ -32,11 +34,21 @@ GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
     const GasSide& side = settings.sides[s];
     GasBoundary& b = boundaries[s];
     switch (side.kind) {
-      case GasSide::Kind::Wall: b.kind = GasBoundaryKind::Wall; break;
-      case GasSide::Kind::FreeSlip: b.kind = GasBoundaryKind::FreeSlip; break;
-      case GasSide::Kind::Inlet: b.kind = GasBoundaryKind::Inlet; break;
-      case GasSide::Kind::Outlet: b.kind = GasBoundaryKind::Outlet; break;
-      case GasSide::Kind::Periodic: b.kind = GasBoundaryKind::Periodic; break;
+      case GasSide::Kind::Wall:
+        b.kind = GasBoundaryKind::Wall;
+        break;
+      case GasSide::Kind::FreeSlip:
+        b.kind = GasBoundaryKind::FreeSlip;
+        break;
+      case GasSide::Kind::Inlet:
+        b.kind = GasBoundaryKind::Inlet;
+        break;
+      case GasSide::Kind::Outlet:
+        b.kind = GasBoundaryKind::Outlet;
+        break;
+      case GasSide::Kind::Periodic:
+        b.kind = GasBoundaryKind::Periodic;
+        break;
     }
     b.pressure = side.pressure;
     b.superficial_velocity = inlet_velocity(s, 0.0);
@@ -44,7 +56,8 @@ GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
       // Face cells whose centre lies in a jet blow at the jet's velocity.
       const int axis = s / 2, first = axis == 0 ? 1 : 0, second = axis == 2 ? 1 : 2;
       const Vec3 h = layout_.cell_size();
-      std::vector<double> profile(std::size_t(settings.cells[first]) * settings.cells[second], side.velocity);
+      std::vector<double> profile(std::size_t(settings.cells[first]) * settings.cells[second],
+                                  side.velocity);
       for (int i = 0; i < settings.cells[first]; ++i)
         for (int j = 0; j < settings.cells[second]; ++j) {
           const double x = domain.lower[first] + (i + 0.5) * h[first];
@@ -64,7 +77,8 @@ GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
   options.simplec = true;
   options.velocity_relaxation = 0.8;
   options.pressure_relaxation = 1.0;
-  solver_ = std::make_unique<GasSolver>(std::move(grid), GasProperties{settings.density, settings.viscosity},
+  solver_ = std::make_unique<GasSolver>(std::move(grid),
+                                        GasProperties{settings.density, settings.viscosity},
                                         boundaries, gravity, options);
   closure_ = std::make_unique<DragClosure>(settings.closure, settings.fluidization_porosity,
                                            gravity.norm() > 0 ? gravity.norm() : 9.81);
@@ -80,7 +94,9 @@ std::vector<double> GasCoupling::scaled_profile(int side, double t) const {
   return profile;
 }
 
-void GasCoupling::prepare(const ParticleStore& particles) { map_particles(particles); }
+void GasCoupling::prepare(const ParticleStore& particles) {
+  map_particles(particles);
+}
 
 std::vector<double> GasCoupling::save() const {
   std::vector<double> state = solver_->save_state();
@@ -92,8 +108,8 @@ std::vector<double> GasCoupling::save() const {
 void GasCoupling::restore(const std::vector<double>& state) {
   const std::size_t cells = porosity_.size();
   if (state.size() < 2 * cells)
-    throw std::invalid_argument("gas state: " + std::to_string(state.size()) + " values, too few for " +
-                                std::to_string(cells) + " cells");
+    throw std::invalid_argument("gas state: " + std::to_string(state.size()) +
+                                " values, too few for " + std::to_string(cells) + " cells");
   const std::size_t solver_size = state.size() - 2 * cells;
   solver_->restore_state(std::span<const double>(state.data(), solver_size));
   std::copy(state.begin() + solver_size, state.begin() + solver_size + cells, porosity_.begin());
@@ -109,7 +125,8 @@ double GasCoupling::inlet_velocity(int side, double t) const {
   return s.velocity;
 }
 
-void GasCoupling::step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights) {
+void GasCoupling::step(double t, const ParticleStore& particles,
+                       std::vector<RelaxFlight>& flights) {
   auto start = std::chrono::steady_clock::now();
   map_particles(particles);
   times_.mapping += seconds_since(start);
@@ -181,7 +198,9 @@ void GasCoupling::map_particles(const ParticleStore& particles) {
   }
   weight_start_[n] = weights_.size();
   for (std::size_t c = 0; c < cells; ++c) {
-    porosity_[c] = open_volume_[c] > 0.0 ? std::max(settings_.min_porosity, 1.0 - solid[c] / open_volume_[c]) : 1.0;
+    porosity_[c] = open_volume_[c] > 0.0
+                       ? std::max(settings_.min_porosity, 1.0 - solid[c] / open_volume_[c])
+                       : 1.0;
     sauter_[c] = d2[c] > 0.0 ? d3[c] / d2[c] : 0.0;
   }
 }
@@ -240,18 +259,22 @@ void GasCoupling::check_kick_stability(double dt_p, const ParticleStore& particl
     if (flights[i].rate * dt_p <= 2.0) continue;
     const double tau = 1.0 / flights[i].rate;
     std::ostringstream out;
-    out << "kick flights are unstable: particle " << particles.id[i] << " has a drag relaxation time tau = m/K = "
-        << tau << " s, and the particle step dt_p = " << dt_p
-        << " s exceeds 2 tau: each explicit drag kick overshoots the gas velocity by a factor |1 - dt_p/tau| = "
+    out << "kick flights are unstable: particle " << particles.id[i]
+        << " has a drag relaxation time tau = m/K = " << tau
+        << " s, and the particle step dt_p = " << dt_p
+        << " s exceeds 2 tau: each explicit drag kick overshoots the gas velocity by a factor |1 - "
+           "dt_p/tau| = "
         << std::abs(1.0 - dt_p / tau)
-        << " > 1, so velocities grow without bound. Remedy: flight.model = \"relax\" (exact for any step), or "
+        << " > 1, so velocities grow without bound. Remedy: flight.model = \"relax\" (exact for "
+           "any step), or "
            "flight.particle_step below "
         << 2.0 * tau << " s (tau / 5 or less for first-order accuracy).";
     throw KickUnstable(out.str());
   }
 }
 
-void GasCoupling::kick(double dt_p, ParticleStore& particles, const std::vector<RelaxFlight>& flights) const {
+void GasCoupling::kick(double dt_p, ParticleStore& particles,
+                       const std::vector<RelaxFlight>& flights) const {
   check_kick_stability(dt_p, particles, flights);
   for (std::size_t i = 0; i < particles.size(); ++i)
     particles.velocity[i] += dt_p * (flights[i].acceleration(particles.velocity[i]) - gravity_);

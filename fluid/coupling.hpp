@@ -39,10 +39,10 @@ class KickUnstable : public std::runtime_error {
 
 /// Time spent in each part of the fluid steps, s of wall time (cumulative).
 struct CouplingTimes {
-  double mapping = 0;       ///< Splitting particles over cells, porosity, drag reaction.
-  double solve = 0;         ///< The gas solver.
-  double interpolation = 0; ///< Gas fields at the particles, closures, flights.
-  std::uint64_t steps = 0;  ///< Fluid steps taken.
+  double mapping = 0;        ///< Splitting particles over cells, porosity, drag reaction.
+  double solve = 0;          ///< The gas solver.
+  double interpolation = 0;  ///< Gas fields at the particles, closures, flights.
+  std::uint64_t steps = 0;   ///< Fluid steps taken.
 };
 
 class GasCoupling {
@@ -104,7 +104,8 @@ class GasCoupling {
   std::vector<double> scaled_profile(int side, double t) const;
   void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights);
   /// K_i (kg/s) of particle i from the closure at slip speed `slip` and porosity eps.
-  double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps, double slip) const;
+  double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
+                          double slip) const;
 
   GasSettings settings_;
   Domain domain_;
@@ -118,12 +119,12 @@ class GasCoupling {
   std::vector<double> open_volume_;
   double cell_volume_ = 0;
   std::vector<double> porosity_;
-  std::vector<double> sauter_;          ///< Sauter mean diameter per cell, m.
+  std::vector<double> sauter_;  ///< Sauter mean diameter per cell, m.
   // Per particle, as of the last mapping.
-  std::vector<std::size_t> weight_start_;       ///< Particle i's weights: [start[i], start[i+1]).
-  std::vector<std::pair<int, double>> weights_; ///< (cell, fraction of the particle's volume).
-  std::vector<Vec3> species_gas_velocity_;      ///< Sum of u_i per species (last step), m/s.
-  std::vector<std::size_t> species_count_;      ///< Particles per species (last step).
+  std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
+  std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).
+  std::vector<Vec3> species_gas_velocity_;       ///< Sum of u_i per species (last step), m/s.
+  std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
   Vec3 total_drag_ = Vec3::Zero();
   CouplingTimes times_;
 };

@@ -17,7 +17,8 @@ enum class CouplingLevel {
 
 /// A jet: part of an inlet face with its own superficial velocity.
 struct InletJet {
-  std::array<double, 2> lower{};  ///< Lower corner on the face (the two other axes in x, y, z order), m.
+  std::array<double, 2>
+      lower{};  ///< Lower corner on the face (the two other axes in x, y, z order), m.
   std::array<double, 2> upper{};  ///< Upper corner, m.
   double velocity = 0;            ///< Superficial velocity into the domain, m/s.
 };
@@ -26,27 +27,30 @@ struct InletJet {
 struct GasSide {
   enum class Kind { Wall, FreeSlip, Inlet, Outlet, Periodic };
   Kind kind = Kind::FreeSlip;
-  double velocity = 0;       ///< Inlet: superficial velocity into the domain, m/s.
-  double ramp_time = 0;      ///< Inlet: the velocity rises linearly from 0 over this time, s (0: at once).
+  double velocity = 0;  ///< Inlet: superficial velocity into the domain, m/s.
+  double ramp_time =
+      0;  ///< Inlet: the velocity rises linearly from 0 over this time, s (0: at once).
   std::vector<InletJet> jets;  ///< Inlet: faces inside a jet blow at the jet's velocity instead.
-  double pressure = 0;       ///< Outlet: pressure, Pa.
+  double pressure = 0;         ///< Outlet: pressure, Pa.
 };
 
 struct GasSettings {
   CouplingLevel coupling = CouplingLevel::None;
-  double density = 1.2;            ///< rho_g, kg/m^3.
-  double viscosity = 1.8e-5;       ///< mu_g, Pa s.
-  std::array<int, 3> cells{1, 1, 1};  ///< Gas cells per axis.
-  double time_step = 1e-4;         ///< Fluid step dt, s.
+  double density = 1.2;                    ///< rho_g, kg/m^3.
+  double viscosity = 1.8e-5;               ///< mu_g, Pa s.
+  std::array<int, 3> cells{1, 1, 1};       ///< Gas cells per axis.
+  double time_step = 1e-4;                 ///< Fluid step dt, s.
   std::string closure = "gidaspow_blend";  ///< Drag closure name (see fluid/drag.hpp).
-  double fluidization_porosity = 0.4;  ///< eps_mf of the Richardson-Zaki exponent (schiller_naumann).
-  double min_porosity = 0.2;       ///< Porosity floor of the mapping (round-off in packed cells).
-  std::array<GasSide, 6> sides;    ///< x_low, x_high, y_low, y_high, z_low, z_high.
+  double fluidization_porosity =
+      0.4;                       ///< eps_mf of the Richardson-Zaki exponent (schiller_naumann).
+  double min_porosity = 0.2;     ///< Porosity floor of the mapping (round-off in packed cells).
+  std::array<GasSide, 6> sides;  ///< x_low, x_high, y_low, y_high, z_low, z_high.
 };
 
 /// The names of the six sides, in GasSettings::sides order.
 inline const std::array<std::string, 6>& gas_side_names() {
-  static const std::array<std::string, 6> names{"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"};
+  static const std::array<std::string, 6> names{"x_low",  "x_high", "y_low",
+                                                "y_high", "z_low",  "z_high"};
   return names;
 }
 

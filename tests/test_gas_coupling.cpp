@@ -57,7 +57,8 @@ double reference_velocity(double t_end) {
 class SettlingBead : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SettlingBead, ReachesTerminalVelocityAndFollowsTheForceBalance) {
-  CoupledRun run = start("settling_sphere.toml", {std::string("flight.model=\"") + GetParam() + "\""});
+  CoupledRun run =
+      start("settling_sphere.toml", {std::string("flight.model=\"") + GetParam() + "\""});
   for (double t : {0.05, 0.1, 0.2, 0.4, 0.8, 1.6}) {
     run.sim->run_until(t);
     const double reference = reference_velocity(t);
@@ -96,19 +97,22 @@ TEST(FixedBed, PressureDropMatchesErgun) {
   const double rho_g = 1.2, mu = 1.8e-5, d = 1e-3, U = 0.1, g = 9.81;
   const double measured =
       (layer_mean(p, first) - layer_mean(p, last)) / ((last - first) * h.z()) - rho_g * g;
-  const double ergun = 150.0 * std::pow(1 - mean_eps, 2) * mu * U / (std::pow(mean_eps, 3) * d * d) +
-                       1.75 * (1 - mean_eps) * rho_g * U * U / (std::pow(mean_eps, 3) * d);
+  const double ergun =
+      150.0 * std::pow(1 - mean_eps, 2) * mu * U / (std::pow(mean_eps, 3) * d * d) +
+      1.75 * (1 - mean_eps) * rho_g * U * U / (std::pow(mean_eps, 3) * d);
   EXPECT_NEAR(mean_eps, 0.45, 0.02) << "the fcc packing at solid fraction 0.55";
   EXPECT_NEAR(measured / ergun, 1.0, 0.02);
-  std::printf("bed porosity %.4f, pressure gradient %.2f Pa/m, Ergun %.2f Pa/m\n", mean_eps, measured, ergun);
+  std::printf("bed porosity %.4f, pressure gradient %.2f Pa/m, Ergun %.2f Pa/m\n", mean_eps,
+              measured, ergun);
 }
 
 // Explicit drag kicks with dt_p > 2 tau overshoot and grow (amplification |1 - dt_p/tau| > 1
 // per kick); carom refuses to go on and says why. Here tau of the 0.5 mm bead is ~0.38 s at
 // its terminal velocity (Stokes tau 1.9 s), so dt_p = 1 s > 2 tau trips the check.
 TEST(KickFlights, UnstableStepIsDetectedAndExplained) {
-  CoupledRun run = start("settling_sphere.toml",
-                         {"flight.model=\"kick\"", "flight.particle_step=1.0", "gas.time_step=0.01"});
+  CoupledRun run =
+      start("settling_sphere.toml",
+            {"flight.model=\"kick\"", "flight.particle_step=1.0", "gas.time_step=0.01"});
   try {
     run.sim->run_until(4.0);
     FAIL() << "kick flights with dt_p > 2 tau must be refused";
@@ -146,12 +150,11 @@ namespace {
 // The pressure at the inlet face is extrapolated from the two lowest cells (2 mm each), which
 // lie inside the bed (11 mm deep at rest), so the extrapolation is exact for a uniform gradient.
 TEST(FluidizedBed, PressureDropCarriesTheBuoyantWeight) {
-  CoupledRun run = start("fluidized_bed.toml",
-                         {"species.glass.fill.count=800",
-                          "domain.max=[0.016, 0.004, 0.04]", "regions.bed.max=[0.016, 0.004, 0.025]",
-                          "gas.cells=[8, 1, 20]",
-                          "gas.boundaries.z_low.velocity=0.8", "gas.boundaries.z_low.ramp_time=0.02",
-                          "time.end=0.3"});
+  CoupledRun run = start(
+      "fluidized_bed.toml",
+      {"species.glass.fill.count=800", "domain.max=[0.016, 0.004, 0.04]",
+       "regions.bed.max=[0.016, 0.004, 0.025]", "gas.cells=[8, 1, 20]",
+       "gas.boundaries.z_low.velocity=0.8", "gas.boundaries.z_low.ramp_time=0.02", "time.end=0.3"});
   const System& system = run.sim->system();
   const double rho_g = 1.2, g = 9.81, area = 0.016 * 0.004, height = 0.04, window = 0.2;
   double weight = 0.0;
@@ -182,10 +185,11 @@ TEST(FluidizedBed, PressureDropCarriesTheBuoyantWeight) {
   const double walls = (wall_force_on_beads() - walls0) / window;
   const double acceleration = (bed_momentum() - momentum0) / window;
   const double balance = (mean * area + walls - acceleration) / weight;
-  std::printf("pressure drop %.2f Pa (std %.2f Pa), W/A %.2f Pa: ratio %.4f; walls carry %.4f of W, "
-              "bed momentum change %.4f of W; balance %.4f\n",
-              mean, std::sqrt(variance), weight / area, mean * area / weight, walls / weight,
-              acceleration / weight, balance);
+  std::printf(
+      "pressure drop %.2f Pa (std %.2f Pa), W/A %.2f Pa: ratio %.4f; walls carry %.4f of W, "
+      "bed momentum change %.4f of W; balance %.4f\n",
+      mean, std::sqrt(variance), weight / area, mean * area / weight, walls / weight,
+      acceleration / weight, balance);
   EXPECT_NEAR(balance, 1.0, 0.03);
   EXPECT_GT(mean * area / weight, 0.8) << "the bed is not fluidized";
 }

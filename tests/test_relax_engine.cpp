@@ -72,7 +72,8 @@ TEST(RelaxEngine, DenseGasWithUnequalDragNeverOverlaps) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Vec3> gas_velocity(sim.particle_count());
-  for (Vec3& u : gas_velocity) u = Vec3(2 * uniform(rng) - 1, 2 * uniform(rng) - 1, 2 * uniform(rng) - 1);
+  for (Vec3& u : gas_velocity)
+    u = Vec3(2 * uniform(rng) - 1, 2 * uniform(rng) - 1, 2 * uniform(rng) - 1);
   sim.add_synchronising_action("fluid_step", 0.0, 0.01, [&](GlobalStep& step) {
     for (std::size_t i = 0; i < step.flights.size(); ++i) {
       const double rate = uniform(rng) < 0.2 ? 0.0 : 200.0 * uniform(rng);
@@ -82,7 +83,8 @@ TEST(RelaxEngine, DenseGasWithUnequalDragNeverOverlaps) {
   double worst = 0.0;
   for (int k = 1; k <= 200; ++k) {
     sim.run_until(0.005 * k);
-    worst = std::max({worst, test::max_relative_overlap(sim), test::max_relative_wall_overlap(sim)});
+    worst =
+        std::max({worst, test::max_relative_overlap(sim), test::max_relative_wall_overlap(sim)});
     ASSERT_LE(worst, 1e-10) << "overlap at t = " << sim.time();
   }
   EXPECT_GT(sim.statistics().pair_events, 5000u) << "the run must be long enough to matter";

@@ -43,6 +43,8 @@ struct CouplingTimes {
   double solve = 0;          ///< The gas solver.
   double interpolation = 0;  ///< Gas fields at the particles, closures, flights.
   std::uint64_t steps = 0;   ///< Fluid steps taken.
+  /// Fluid steps whose SIMPLE iterations stopped at the iteration limit before converging.
+  std::uint64_t unconverged_steps = 0;
 };
 
 class GasCoupling {

@@ -147,6 +147,7 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
     const double mapping = t.mapping - t0.mapping, solve = t.solve - t0.solve,
                  interpolation = t.interpolation - t0.interpolation;
     j << ",\n  \"gas\": {\"fluid_steps\": " << (t.steps - t0.steps)
+      << ", \"unconverged_steps\": " << (t.unconverged_steps - t0.unconverged_steps)
       << ", \"mapping_seconds\": " << number(mapping) << ", \"solve_seconds\": " << number(solve)
       << ", \"interpolation_seconds\": " << number(interpolation)
       << ", \"event_seconds\": " << number(stretch.wall_seconds - mapping - solve - interpolation) << "}";

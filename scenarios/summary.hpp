@@ -21,7 +21,8 @@
 ///                            P_kin = <2 E_kin / (3 V)>, P_coll = sum r_ij . J_i / (3 V dt)
 ///   energy                   final {translational, rotational, potential, dissipated}, J
 ///   simulated_seconds_per_wall_second
-///   gas                      runs with a gas: {fluid_steps, mapping_seconds, solve_seconds,
+///   gas                      runs with a gas: {fluid_steps, unconverged_steps (SIMPLE stopped at
+///                            its iteration limit), mapping_seconds, solve_seconds,
 ///                            interpolation_seconds (wall time of each part of the fluid steps),
 ///                            event_seconds (the rest of the wall time: the particles' events)}
 #include <chrono>

@@ -65,11 +65,7 @@ Simulator::Simulator(System system, SimulatorOptions options)
   has_gravity_ = system_.flight.has_gravity();
   relax_ = options_.flight_model == FlightModel::Relax;
   flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
-  for (std::size_t i = 0; i < n; ++i)
-    if (system_.species[p.species[i]].fixed) {
-      p.velocity[i] = p.spin[i] = Vec3::Zero();
-      flights_[i] = RelaxFlight{};
-    }
+  hold_fixed_particles();
   events_.assign(n, Event{});
   crossings_.assign(n, Event{});
   end_slot_ = n;
@@ -174,6 +170,15 @@ void Simulator::add_synchronising_action(std::string name, double first_time, do
   horizon_ = horizon;
 }
 
+void Simulator::hold_fixed_particles() {
+  ParticleStore& p = system_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (system_.species[p.species[i]].fixed) {
+      p.velocity[i] = p.spin[i] = Vec3::Zero();
+      flights_[i] = RelaxFlight{};
+    }
+}
+
 double Simulator::next_synchronisation() const {
   double t = kNever;
   for (const PeriodicAction& a : actions_)
@@ -197,11 +202,7 @@ void Simulator::fire_action(std::size_t k) {
   GlobalStep step{time_, p, flights_};
   action.step(step);
   if (flights_.size() != n) throw std::logic_error(action.name + " changed the number of flights");
-  for (std::size_t i = 0; i < n; ++i)
-    if (system_.species[p.species[i]].fixed) {
-      p.velocity[i] = p.spin[i] = Vec3::Zero();
-      flights_[i] = RelaxFlight{};
-    }
+  hold_fixed_particles();
   action.next_time += action.interval;
   calendar_.set(end_slot_ + 1 + k, action.next_time);
   horizon_ = next_synchronisation();

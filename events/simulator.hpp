@@ -187,6 +187,8 @@ class Simulator {
   Event relax_cell_crossing(std::int32_t i) const;
   /// Runs periodic action k at its time (synchronising first if it is a step).
   void fire_action(std::size_t k);
+  /// Fixed particles: at rest, no spin, no force (after anything that may have set them).
+  void hold_fixed_particles();
   /// The earliest next time of the synchronising actions (kNever if none), s.
   double next_synchronisation() const;
 

@@ -26,7 +26,6 @@ GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
       species_density_(std::move(species_density)) {
   layout_ = CellLayout::over(domain, settings.cells);
   open_volume_ = carom::open_volume(layout_, walls);
-  cell_volume_ = layout_.cell_volume();
   GasGrid grid(domain.lower, domain.upper, settings.cells);
   grid.set_open_volume(open_volume_);
   std::array<GasBoundary, 6> boundaries;
@@ -281,22 +280,10 @@ void GasCoupling::kick(double dt_p, ParticleStore& particles,
     particles.velocity[i] += dt_p * (flights[i].acceleration(particles.velocity[i]) - gravity_);
 }
 
-std::vector<double> GasCoupling::pressure_field() const {
-  std::vector<double> p(porosity_.size());
-  for (std::size_t c = 0; c < p.size(); ++c) p[c] = solver_->pressure(static_cast<int>(c));
-  return p;
-}
-
 std::vector<Vec3> GasCoupling::velocity_field() const {
   std::vector<Vec3> u(porosity_.size());
   for (std::size_t c = 0; c < u.size(); ++c) u[c] = solver_->cell_velocity(static_cast<int>(c));
   return u;
-}
-
-Vec3 GasCoupling::cell_size() const {
-  const Vec3 length = domain_.upper - domain_.lower;
-  return Vec3(length.x() / settings_.cells[0], length.y() / settings_.cells[1],
-              length.z() / settings_.cells[2]);
 }
 
 double GasCoupling::pressure_drop() const {

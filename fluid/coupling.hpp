@@ -79,12 +79,12 @@ class GasCoupling {
   /// The gas cell count per axis.
   std::array<int, 3> cells() const { return settings_.cells; }
   /// Gas pressure in every cell (x fastest, then y, then z), Pa.
-  std::vector<double> pressure_field() const;
+  const std::vector<double>& pressure_field() const { return solver_->pressure_field(); }
   /// Interstitial gas velocity at every cell centre, m/s.
   std::vector<Vec3> velocity_field() const;
   /// Lower corner of the gas grid, m, and its cell size, m.
   const Vec3& grid_lower() const { return domain_.lower; }
-  Vec3 cell_size() const;
+  Vec3 cell_size() const { return layout_.cell_size(); }
   /// Mean gas pressure at the bottom face of the grid minus that at the top face (along z;
   /// each extrapolated linearly from the two outermost layers of cells), Pa.
   double pressure_drop() const;
@@ -119,7 +119,6 @@ class GasCoupling {
   GasStepReport last_report_;
   CellLayout layout_;
   std::vector<double> open_volume_;
-  double cell_volume_ = 0;
   std::vector<double> porosity_;
   std::vector<double> sauter_;  ///< Sauter mean diameter per cell, m.
   // Per particle, as of the last mapping.

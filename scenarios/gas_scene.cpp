@@ -3,13 +3,17 @@
 #include <algorithm>
 #include <limits>
 
+#include "fluid/drag.hpp"
+
 namespace carom {
 
 namespace {
 
 /// The drag closures of fluid/drag.hpp, by scene name.
-const std::vector<std::string> kClosures{"schiller_naumann", "ergun",    "wen_yu",   "gidaspow",
-                                         "gidaspow_blend",   "beetstra", "di_felice"};
+std::vector<std::string> closure_names() {
+  const auto& names = drag_closure_names();
+  return {names.begin(), names.end()};
+}
 
 GasSide read_side(TableReader& sides, const std::string& name) {
   GasSide side;
@@ -105,7 +109,7 @@ void read_flight_and_gas(TableReader& root, Scene& scene) {
       gas.cells[k] = static_cast<int>(cells[k]);
     }
     gas.time_step = g->number("time_step", gas.time_step, Range::positive("fluid time step dt, s"));
-    gas.closure = g->string("drag", gas.closure, kClosures);
+    gas.closure = g->string("drag", gas.closure, closure_names());
     gas.fluidization_porosity = g->number("fluidization_porosity", gas.fluidization_porosity,
                                           Range{0.0, 1.0, true, true,
                                                 "porosity at minimum fluidization eps_mf "

@@ -17,6 +17,19 @@
 namespace carom {
 namespace {
 
+/// Volume of the unit cube on the side n.x < offset of a plane (all n > 0), by the vertex
+/// formula: sum over corners v of (-1)^|v| max(0, offset - n.v)^3 / (6 n_x n_y n_z).
+double unit_cube_volume_below(const Vec3& n, double offset) {
+  double below = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 v(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    const double sign = ((c & 1) + ((c >> 1) & 1) + ((c >> 2) & 1)) % 2 ? -1.0 : 1.0;
+    below += sign * std::pow(std::max(0.0, offset - n.dot(v)), 3);
+  }
+  return below / (6.0 * n.x() * n.y() * n.z());
+}
+
+
 constexpr double kPi = std::numbers::pi;
 
 /// Tanh-sinh quadrature of a bounded f over [lo, hi]: double-exponential convergence even with
@@ -172,13 +185,7 @@ TEST(PorosityOverlap, BoxHalfSpacesExact) {
   const Vec3 n = Vec3(1.0, 2.0, 3.0).normalized();
   for (double d : {0.1, 0.7, 1.5, 2.9, 3.6}) {
     const double offset = d / Vec3(1.0, 2.0, 3.0).norm();
-    double below = 0.0;
-    for (int c = 0; c < 8; ++c) {
-      const Vec3 v(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-      const double sign = ((c & 1) + ((c >> 1) & 1) + ((c >> 2) & 1)) % 2 ? -1.0 : 1.0;
-      below += sign * std::pow(std::max(0.0, offset - n.dot(v)), 3);
-    }
-    below /= 6.0 * n.x() * n.y() * n.z();
+    const double below = unit_cube_volume_below(n, offset);
     const double kept = box_halfspaces_volume(Vec3::Zero(), Vec3::Ones(), {{n, offset}});
     EXPECT_NEAR(kept, 1.0 - below, 1e-14) << "d " << d;
   }
@@ -354,13 +361,7 @@ TEST(PorosityOpenVolume, PlanesExact) {
   const std::vector<double> oblique = open_volume(layout, {Wall::plane("slope", n * offset, n)});
   double total = 0.0;
   for (double v : oblique) total += v;
-  double below = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const Vec3 v(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-    const double sign = ((c & 1) + ((c >> 1) & 1) + ((c >> 2) & 1)) % 2 ? -1.0 : 1.0;
-    below += sign * std::pow(std::max(0.0, offset - n.dot(v)), 3);
-  }
-  below /= 6.0 * n.x() * n.y() * n.z();
+  const double below = unit_cube_volume_below(n, offset);
   EXPECT_NEAR(total, 1.0 - below, 1e-14);
 }
 

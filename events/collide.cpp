@@ -50,6 +50,9 @@ void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
   const std::size_t species = statistics_.species_count;
   ++statistics_.pair_collisions[si * species + sj];
   if (si != sj) ++statistics_.pair_collisions[sj * species + si];
+  const double impulse = outcome.impulse.norm();
+  statistics_.pair_impulse[si * species + sj] += impulse;
+  if (si != sj) statistics_.pair_impulse[sj * species + si] += impulse;
   ++statistics_.pair_events;
   statistics_.virial += dr * outcome.impulse.transpose();
   statistics_.dissipated_energy += outcome.dissipated;

@@ -11,6 +11,10 @@ struct RunStatistics {
   std::size_t wall_count = 0;
   /// Collisions between species s and t, stored symmetric at [s * S + t] and [t * S + s].
   std::vector<std::uint64_t> pair_collisions;
+  /// Sum of the impulse magnitudes |J| of the collisions between species s and t, N s, stored
+  /// symmetric like pair_collisions (divide by time and by the count of s: the momentum per
+  /// second one particle of s receives from collisions with t, in magnitude).
+  std::vector<double> pair_impulse;
   /// Collisions of species s with wall w at [s * W + w].
   std::vector<std::uint64_t> wall_collisions;
   /// Total impulse given to each wall by the particles, N s (for wall pressures).
@@ -28,10 +32,12 @@ struct RunStatistics {
     species_count = species;
     wall_count = walls;
     pair_collisions.assign(species * species, 0);
+    pair_impulse.assign(species * species, 0.0);
     wall_collisions.assign(species * walls, 0);
     wall_impulse.assign(walls, Eigen::Vector3d::Zero());
   }
   std::uint64_t pair(std::size_t s, std::size_t t) const { return pair_collisions[s * species_count + t]; }
+  double impulse(std::size_t s, std::size_t t) const { return pair_impulse[s * species_count + t]; }
   std::uint64_t wall(std::size_t s, std::size_t w) const { return wall_collisions[s * wall_count + w]; }
   /// All collisions (pair + wall).
   std::uint64_t collisions() const { return pair_events + wall_events; }

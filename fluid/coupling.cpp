@@ -101,18 +101,46 @@ std::vector<double> GasCoupling::save() const {
   std::vector<double> state = solver_->save_state();
   state.insert(state.end(), porosity_.begin(), porosity_.end());
   state.insert(state.end(), sauter_.begin(), sauter_.end());
+  // What the last step's flights were set from, per species (count, gas velocity, gas force,
+  // porosity) and in total, so that outputs after a resume read what they would have read.
+  const std::size_t species = species_density_.size();
+  for (std::size_t s = 0; s < species; ++s) {
+    const bool seen = s < species_count_.size();
+    const Vec3 u = seen ? species_gas_velocity_[s] : Vec3::Zero();
+    const Vec3 f = seen ? species_gas_force_[s] : Vec3::Zero();
+    state.insert(state.end(), {seen ? static_cast<double>(species_count_[s]) : 0.0, u.x(), u.y(),
+                               u.z(), f.x(), f.y(), f.z(), seen ? species_porosity_[s] : 0.0});
+  }
+  state.insert(state.end(), {total_drag_.x(), total_drag_.y(), total_drag_.z()});
   return state;
 }
 
 void GasCoupling::restore(const std::vector<double>& state) {
   const std::size_t cells = porosity_.size();
-  if (state.size() < 2 * cells)
+  const std::size_t species = species_density_.size();
+  const std::size_t tail = 2 * cells + 8 * species + 3;
+  if (state.size() < tail)
     throw std::invalid_argument("gas state: " + std::to_string(state.size()) +
-                                " values, too few for " + std::to_string(cells) + " cells");
-  const std::size_t solver_size = state.size() - 2 * cells;
+                                " values, too few for " + std::to_string(cells) + " cells and " +
+                                std::to_string(species) + " species");
+  const std::size_t solver_size = state.size() - tail;
   solver_->restore_state(std::span<const double>(state.data(), solver_size));
-  std::copy(state.begin() + solver_size, state.begin() + solver_size + cells, porosity_.begin());
-  std::copy(state.begin() + solver_size + cells, state.end(), sauter_.begin());
+  auto at = state.begin() + static_cast<std::ptrdiff_t>(solver_size);
+  std::copy(at, at + static_cast<std::ptrdiff_t>(cells), porosity_.begin());
+  at += static_cast<std::ptrdiff_t>(cells);
+  std::copy(at, at + static_cast<std::ptrdiff_t>(cells), sauter_.begin());
+  at += static_cast<std::ptrdiff_t>(cells);
+  species_count_.assign(species, 0);
+  species_gas_velocity_.assign(species, Vec3::Zero());
+  species_gas_force_.assign(species, Vec3::Zero());
+  species_porosity_.assign(species, 0.0);
+  for (std::size_t s = 0; s < species; ++s, at += 8) {
+    species_count_[s] = static_cast<std::size_t>(at[0]);
+    species_gas_velocity_[s] = Vec3(at[1], at[2], at[3]);
+    species_gas_force_[s] = Vec3(at[4], at[5], at[6]);
+    species_porosity_[s] = at[7];
+  }
+  total_drag_ = Vec3(at[0], at[1], at[2]);
 }
 
 GasCoupling::~GasCoupling() = default;
@@ -227,6 +255,8 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
   const std::size_t n = particles.size();
   flights.resize(n);
   species_gas_velocity_.assign(species_density_.size(), Vec3::Zero());
+  species_gas_force_.assign(species_density_.size(), Vec3::Zero());
+  species_porosity_.assign(species_density_.size(), 0.0);
   species_count_.assign(species_density_.size(), 0);
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 u = Vec3::Zero(), grad_p = Vec3::Zero();
@@ -244,8 +274,20 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
     flights[i] = RelaxFlight{rate, gravity_ + rate * u - grad_p / species_density_[s]};
     total_drag_ += k * (u - v);
     species_gas_velocity_[s] += u;
+    species_gas_force_[s] += k * (u - v) - (particles.mass[i] / species_density_[s]) * grad_p;
+    species_porosity_[s] += eps;
     ++species_count_[s];
   }
+}
+
+Vec3 GasCoupling::mean_gas_force_on(std::uint32_t s) const {
+  if (s >= species_count_.size() || species_count_[s] == 0) return Vec3::Zero();
+  return species_gas_force_[s] / static_cast<double>(species_count_[s]);
+}
+
+double GasCoupling::mean_porosity_at(std::uint32_t s) const {
+  if (s >= species_count_.size() || species_count_[s] == 0) return 0.0;
+  return species_porosity_[s] / static_cast<double>(species_count_[s]);
 }
 
 Vec3 GasCoupling::mean_gas_velocity_at(std::uint32_t s) const {

@@ -90,6 +90,11 @@ class GasCoupling {
   double pressure_drop() const;
   /// Mean interstitial gas velocity seen by the particles of species s at the last step, m/s.
   Vec3 mean_gas_velocity_at(std::uint32_t s) const;
+  /// Mean force of the gas on a particle of species s at the last step: drag K_i (u_i - v_i)
+  /// plus the pressure-gradient force -V_i grad p_i, N.
+  Vec3 mean_gas_force_on(std::uint32_t s) const;
+  /// Mean porosity interpolated to the particles of species s at the last step.
+  double mean_porosity_at(std::uint32_t s) const;
   /// Sum of the drag forces on the particles at the last step, N.
   const Vec3& total_drag() const { return total_drag_; }
   const CouplingTimes& times() const { return times_; }
@@ -125,6 +130,8 @@ class GasCoupling {
   std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
   std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).
   std::vector<Vec3> species_gas_velocity_;       ///< Sum of u_i per species (last step), m/s.
+  std::vector<Vec3> species_gas_force_;          ///< Sum of K_i (u_i - v_i) - V_i grad p_i per species (last step), N.
+  std::vector<double> species_porosity_;         ///< Sum of eps_i per species (last step).
   std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
   Vec3 total_drag_ = Vec3::Zero();
   CouplingTimes times_;

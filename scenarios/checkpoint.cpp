@@ -94,6 +94,7 @@ void write_state(const h5::Group& group, const EngineState& s) {
   stats.set_attribute("cell_crossings", st.cell_crossings);
   stats.write("pair_collisions", st.pair_collisions);
   stats.write("wall_collisions", st.wall_collisions);
+  stats.write("pair_impulse", st.pair_impulse);
   stats.write("wall_impulse",
               flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
               {st.wall_impulse.size(), 3});
@@ -162,6 +163,7 @@ EngineState read_state(const h5::Group& group) {
   st.cell_crossings = stats.attribute<std::uint64_t>("cell_crossings");
   st.pair_collisions = stats.read<std::uint64_t>("pair_collisions", {species * species});
   st.wall_collisions = stats.read<std::uint64_t>("wall_collisions", {species * walls});
+  st.pair_impulse = stats.read<double>("pair_impulse", {species * species});
   const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
   st.wall_impulse.assign(impulse.begin(), impulse.end());
   st.virial = from_row_major(stats.read<double>("virial", {3, 3}));

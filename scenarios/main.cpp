@@ -4,6 +4,7 @@
 //   carom resume DIR [--end T] [--quiet]
 //   carom check SCENE [--set key=value ...] [--seed N]
 //   carom info FILE.h5
+//   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
 //
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
 // is written), 130 interrupted by SIGINT/SIGTERM (a checkpoint is written). See run.hpp.
@@ -16,6 +17,7 @@
 #include "info.hpp"
 #include "run.hpp"
 #include "scene.hpp"
+#include "sweep.hpp"
 
 using namespace carom;
 
@@ -59,6 +61,21 @@ int main(int argc, char** argv) {
   CLI::App* info = app.add_subcommand("info", "describe a run file or checkpoint");
   info->add_option("file", info_path, "HDF5 file (run.h5 or checkpoint.h5)")->required();
 
+  SweepOptions sweep_options;
+  std::string sweep_out;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "run a scene over a grid of scene values and seeds, resumably; also under mpirun (see SWEEPS.md)");
+  sweep->add_option("sweep_file", sweep_options.file, "sweep file (TOML; see scenarios/SWEEPS.md)")->required();
+  sweep->add_option("--jobs,-j", sweep_options.jobs, "cases run at once (per MPI rank)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
+  CLI::Option* sweep_out_option = sweep->add_option("--out", sweep_out, "output directory (replaces the file's out)");
+  sweep->add_flag("--retry-failed", sweep_options.retry_failed, "run cases that failed before again, from their start");
+  sweep->add_flag("--dry-run", sweep_options.dry_run, "validate every case (as carom check) and list them; run nothing");
+  sweep->add_flag("--quiet", sweep_options.quiet, "no progress lines (errors are still printed)");
+  sweep->footer(
+      "Exit codes: 0 every case completed; 1 some case failed (summary still written); 2 bad sweep file or case "
+      "(nothing run); 130 interrupted (run the same command again to continue).");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -66,6 +83,10 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
+  if (*sweep) {
+    if (sweep_out_option->count() > 0) sweep_options.out = sweep_out;
+    return run_sweep(sweep_options);
+  }
   try {
     if (*run || *check) {
       std::optional<std::uint64_t> chosen_seed;

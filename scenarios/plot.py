@@ -14,7 +14,8 @@ Writes, as 150 dpi PNGs named after the run file:
   RUN_gas.png              runs with a gas: the bed pressure drop against time and against the
                            inlet velocity, with the buoyant weight per area W/A of the particles
                            (the level a fluidized bed's pressure drop must reach);
-  RUN_gas_field.png        runs with a gas: porosity and gas velocity of the snapshot.
+  RUN_gas_field.png        runs with a gas: porosity and gas velocity of the snapshot;
+  RUN_mixing.png, RUN_collisions.png   the run's analysis (analysis_plots.py).
 
 Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
 Enskog rate of s-t collisions in a mixture at granular temperature T (k = 1):
@@ -39,6 +40,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import EllipseCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from analysis_plots import analysis_figures  # noqa: E402
 
 DPI = 150
 plt.rcParams.update({
@@ -338,6 +342,8 @@ def main(argv=None):
         if "gas" in run:
             figures += [("gas", lambda p: plot_gas(run, p)),
                         ("gas_field", lambda p: plot_gas_field(run, p, args.snapshot))]
+        figures += [(name, lambda p, draw=draw: draw(p, DPI))
+                    for name, draw in analysis_figures(run, args.run)]
         for name, draw in figures:
             path = os.path.join(out, f"{stem}_{name}.png")
             draw(path)

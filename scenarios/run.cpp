@@ -11,6 +11,7 @@
 
 #include "gas_run.hpp"
 #include "progress.hpp"
+#include "run_analysis.hpp"
 #include "run_output.hpp"
 #include "summary.hpp"
 
@@ -61,11 +62,12 @@ struct Schedule {
 };
 
 /// The loop shared by run and resume. `fresh`: a new run, whose t = 0 outputs are written here.
-int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene& scene,
+int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, RunAnalysis& analysis, const Scene& scene,
              const RunInfo& info, const fs::path& dir, double end_time, bool fresh, bool quiet) {
   install_stop_handlers();
   const std::string checkpoint_path = (dir / "checkpoint.h5").string();
   const std::string summary_path = (dir / "summary.json").string();
+  const std::string report_path = (dir / "report.md").string();
   RunStretch stretch;
   stretch.start_time = sim.time();
   stretch.start_statistics = sim.statistics();
@@ -75,10 +77,14 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
 
   Schedule snapshots{scene.output.snapshot_every}, samples{scene.output.sample_every},
       checkpoints{scene.output.checkpoint_every};
+  // The time averages of summary.json are taken on a schedule of simulated time (the samples',
+  // or 200 instants over the run), never at wall-clock chunk ends, so they are reproducible.
+  Schedule averages{scene.output.sample_every > 0 ? scene.output.sample_every : scene.end_time / 200.0};
+  averages.start_after(sim.time());
   double last_snapshot = sim.time(), last_sample = sim.time();
   if (fresh) {
     file.write_snapshot(sim, gas);
-    file.append_sample(sim, gas);
+    file.append_sample(sim, gas, analysis.sample(sim, gas));
     snapshots.pass(sim.time());
     samples.pass(sim.time());
     checkpoints.pass(sim.time());
@@ -102,7 +108,9 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
     stretch.status = status;
     stretch.message = message;
     stretch.wall_seconds = wall_seconds();
+    stretch.analysis_json = analysis.summary_json(sim);
     write_text_atomically(summary_path, summary_json(sim, scene, stretch));
+    write_text_atomically(report_path, analysis.report(sim));
   };
 
   // A signal also stops run_until itself within a few thousand events, so even a chunk that
@@ -110,7 +118,8 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
   sim.set_stop_flag(&g_stop);
   try {
     while (sim.time() < end_time) {
-      const double target = std::min({end_time, sim.time() + chunk, snapshots.next(), samples.next(), checkpoints.next()});
+      const double target = std::min({end_time, sim.time() + chunk, snapshots.next(), samples.next(),
+                                      checkpoints.next(), averages.next()});
       const bool chunk_limited = target == sim.time() + chunk;
       const auto chunk_start = std::chrono::steady_clock::now();
       sim.run_until(target);
@@ -121,7 +130,7 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
         snapshots.pass(t);
       }
       if (samples.due(t)) {
-        file.append_sample(sim, gas);
+        file.append_sample(sim, gas, analysis.sample(sim, gas));
         last_sample = t;
         samples.pass(t);
       }
@@ -129,7 +138,10 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
         write_checkpoint(checkpoint_path, sim, info, gas);
         checkpoints.pass(t);
       }
-      stretch.averages.sample(sim);
+      if (averages.due(t) || t >= end_time) {
+        stretch.averages.sample(sim);
+        averages.pass(t);
+      }
       progress.update(t, sim.statistics().events, sim.statistics().collisions());
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
       if (chunk_limited)
@@ -152,7 +164,7 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
     return kExitFailure;
   }
   if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
-  if (last_sample < sim.time()) file.append_sample(sim, gas);
+  if (last_sample < sim.time()) file.append_sample(sim, gas, analysis.sample(sim, gas));
   write_checkpoint(checkpoint_path, sim, info, gas);
   finish("completed", "");
   if (!quiet) {
@@ -166,7 +178,7 @@ int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, const Scene&
 
 /// Creates the output directory, refusing to mix a new run with an earlier one's files.
 void prepare_output_directory(const fs::path& dir, bool overwrite) {
-  const char* outputs[] = {"run.h5", "run.xmf", "checkpoint.h5", "summary.json"};
+  const char* outputs[] = {"run.h5", "run.xmf", "checkpoint.h5", "summary.json", "report.md"};
   std::error_code error;
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");
@@ -214,7 +226,9 @@ int run_scene(Scene scene, const RunOptions& options) {
     throw SceneError(scene.file + ": [gas]: " + e.what());
   }
   RunFile file((dir / "run.h5").string(), info, sim->system(), gas.get());
-  return run_loop(*sim, gas.get(), file, scene, info, dir, scene.end_time, true, options.quiet);
+  RunAnalysis analysis(scene, *sim);
+  analysis.write_setup(file.path());
+  return run_loop(*sim, gas.get(), file, analysis, scene, info, dir, scene.end_time, true, options.quiet);
 }
 
 int resume_run(const std::string& directory, std::optional<double> end_time, bool quiet) {
@@ -240,8 +254,9 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   }
   Simulator sim(scene.system, scene.options, std::move(checkpoint.state));
   std::unique_ptr<GasCoupling> gas = attach_gas(sim, scene, &checkpoint.gas_state);
+  RunAnalysis analysis(scene, sim, (dir / "run.h5").string(), now);
   std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());
-  return run_loop(sim, gas.get(), *file, scene, info, dir, end, false, quiet);
+  return run_loop(sim, gas.get(), *file, analysis, scene, info, dir, end, false, quiet);
 }
 
 }  // namespace carom

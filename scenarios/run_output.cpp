@@ -59,6 +59,7 @@ SeriesLayout series_layout(std::size_t species, std::size_t walls) {
                     {"pressure_tensor", 9},
                     {"pressure", 0}};
   layout.counters = {{"events", 0}, {"collisions", 0}, {"pair_collisions", species * species}};
+  layout.doubles.emplace_back("pair_impulse", species * species);
   if (walls > 0) {
     layout.counters.emplace_back("wall_collisions", species * walls);
     layout.doubles.emplace_back("wall_impulse", walls * 3);
@@ -317,7 +318,7 @@ void RunFile::write_snapshot(const Simulator& sim, const GasCoupling* gas) {
   d.write_xdmf();
 }
 
-void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas) {
+void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas, const SeriesRow& extra) {
   Impl& d = *impl_;
   const double time = sim.time();
   if (d.has_previous && d.previous_time >= time) d.drop_samples_from(time);
@@ -358,6 +359,7 @@ void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas) {
   put("events", std::vector<std::uint64_t>{stats.events});
   put("collisions", std::vector<std::uint64_t>{stats.collisions()});
   put("pair_collisions", stats.pair_collisions);
+  put("pair_impulse", stats.pair_impulse);
   if (d.wall_count > 0) {
     put("wall_collisions", stats.wall_collisions);
     put("wall_impulse",
@@ -375,6 +377,15 @@ void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas) {
     put("gas_pressure_drop", std::vector<double>{drop});
     put("gas_inlet_velocity", inlet);
     put("gas_drag_force", std::vector<double>{drag.x(), drag.y(), drag.z()});
+  }
+  for (const SeriesColumn& column : extra) {
+    if (!series.contains(column.name)) {
+      // A series that starts late would not line up with time: only at the first row.
+      if (series.open_dataset("time").size() > 1)
+        throw std::logic_error("run file: series " + column.name + " added after the first row");
+      series.create_extendible<double>(column.name, column.columns);
+    }
+    put(column.name.c_str(), column.values);
   }
   d.file.flush();
 

@@ -17,8 +17,12 @@
 ///     kinetic_stress (x9, sum m v v / V at the sample, Pa); pressure_tensor (x9, Pa: the
 ///     kinetic stress averaged over the interval by the trapezoidal rule plus the virial booked
 ///     in the interval / (V dt)); pressure (trace / 3, Pa); pair_collisions (x S*S, uint64,
-///     cumulative, symmetric); and when there are walls wall_collisions (x S*W, uint64,
+///     cumulative, symmetric); pair_impulse (x S*S, cumulative sum of |J| over the collisions
+///     of each species pair, N s, symmetric); and when there are walls wall_collisions (x S*W, uint64,
 ///     cumulative) and wall_impulse (x W*3, cumulative, N s). V is the box volume.
+///   /analysis/          (runs with an analysis) id, tagged, start_height (by particle id),
+///                        mixing_grid/ and field_grid/ (lower, upper, cells); the analysis
+///                        series (run_analysis.hpp) are in /timeseries beside the others
 /// The XDMF sidecar (same name, .xmf instead of .h5) lists the snapshots as a temporal
 /// collection of Polyvertex grids with radius, velocity, spin, species and id as point data;
 /// it is rewritten (atomically) after every snapshot.
@@ -36,6 +40,7 @@
 
 #include "events/simulator.hpp"
 #include "fluid/coupling.hpp"
+#include "run_analysis.hpp"
 
 namespace carom {
 
@@ -63,8 +68,9 @@ class RunFile {
   /// Adds a snapshot of every particle at sim.time() and rewrites the XDMF sidecar.
   void write_snapshot(const Simulator& sim, const GasCoupling* gas = nullptr);
   /// Appends one row of every time series at sim.time(); rates and the pressure tensor are
-  /// averages over the interval since the previous row (since t = 0 for the first).
-  void append_sample(const Simulator& sim, const GasCoupling* gas = nullptr);
+  /// averages over the interval since the previous row (since t = 0 for the first). `extra`:
+  /// further series of this row (the run's analysis), created at their first row.
+  void append_sample(const Simulator& sim, const GasCoupling* gas = nullptr, const SeriesRow& extra = {});
   const std::string& path() const;
 
  private:

@@ -7,16 +7,42 @@
 #include <sstream>
 
 #include "gas_scene.hpp"
+#include "analysis_scene.hpp"
 #include "overrides.hpp"
 
 namespace carom {
 
+std::uint32_t species_index(TableReader& t, std::string_view key, const Scene& scene) {
+  const std::string name = t.required_string(key);
+  std::vector<std::string> names;
+  for (std::size_t s = 0; s < scene.system.species.size(); ++s) {
+    if (scene.system.species[s].name == name) return static_cast<std::uint32_t>(s);
+    names.push_back(scene.system.species[s].name);
+  }
+  const std::string guess = closest(name, names);
+  t.fail(key, "names no species" + (guess.empty() ? std::string() : "; did you mean \"" + guess + "\"?"));
+}
+
+std::size_t region_index(TableReader& t, std::string_view key, const Scene& scene) {
+  const std::string region = t.string(key, "domain");
+  auto found = std::find_if(scene.regions.begin(), scene.regions.end(), [&](const Region& r) { return r.name == region; });
+  if (found == scene.regions.end()) {
+    std::vector<std::string> names;
+    for (const Region& r : scene.regions) names.push_back(r.name);
+    const std::string guess = closest(region, names);
+    t.fail(key, "names no region (define it as [regions." + region + "] with min and max" +
+                    (guess.empty() ? std::string(")") : "; did you mean \"" + guess + "\"?)"));
+  }
+  return static_cast<std::size_t>(found - scene.regions.begin());
+}
+
 namespace {
 
 const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
-                                            "collisions", "flight", "initial", "time",    "output", "engine", "gas"};
-/// Sections of the design that later issues implement: named, so the error says so.
-const std::vector<std::string> kLaterSections = {"analysis"};
+                                            "collisions", "flight", "initial", "time",    "output", "engine", "gas",
+                                            "analysis"};
+/// Sections of the design that later versions implement: named, so the error says so.
+const std::vector<std::string> kLaterSections = {};
 
 std::string vec_text(const Vec3& v) {
   std::string text("[");
@@ -106,16 +132,7 @@ void read_fills(Scene& scene, std::vector<TableReader>& species_tables) {
     if (!f) continue;
     Fill fill;
     fill.where = f->where();
-    const std::string region = f->string("region", "domain");
-    auto found = std::find_if(scene.regions.begin(), scene.regions.end(), [&](const Region& r) { return r.name == region; });
-    if (found == scene.regions.end()) {
-      std::vector<std::string> names;
-      for (const Region& r : scene.regions) names.push_back(r.name);
-      const std::string guess = closest(region, names);
-      f->fail("region", "names no region (define it as [regions." + region + "] with min and max" +
-                            (guess.empty() ? std::string(")") : "; did you mean \"" + guess + "\"?)"));
-    }
-    fill.region = static_cast<std::size_t>(found - scene.regions.begin());
+    fill.region = region_index(*f, "region", scene);
     int given = 0;
     if (f->has("count")) {
       fill.amount = Fill::Amount::Count;
@@ -141,17 +158,6 @@ void read_fills(Scene& scene, std::vector<TableReader>& species_tables) {
     f->finish();
     scene.fills[s] = fill;
   }
-}
-
-std::uint32_t species_index(TableReader& t, std::string_view key, const Scene& scene) {
-  const std::string name = t.required_string(key);
-  std::vector<std::string> names;
-  for (std::size_t s = 0; s < scene.system.species.size(); ++s) {
-    if (scene.system.species[s].name == name) return static_cast<std::uint32_t>(s);
-    names.push_back(scene.system.species[s].name);
-  }
-  const std::string guess = closest(name, names);
-  t.fail(key, "names no species" + (guess.empty() ? std::string() : "; did you mean \"" + guess + "\"?"));
 }
 
 void read_walls(TableReader& root, Scene& scene) {
@@ -387,6 +393,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   read_initial(root, scene);
   read_time_and_output(root, scene);
   read_engine(root, scene);
+  read_analysis(root, scene);
   root.finish();
   return scene;
 }

@@ -7,6 +7,7 @@
 ///   build_initial_state()   places the particles and gives them velocities (may take a while).
 /// Both throw SceneError with a message naming the file, line, key, value and allowed range.
 /// SCENES.md documents every key.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -70,6 +71,19 @@ struct FlightSettings {
   double particle_step = 0;  ///< Kick: time between drag kicks dt_p, s.
 };
 
+/// [analysis]: what a run measures beyond the standard time series (SCENES.md, "Analysis").
+struct AnalysisSettings {
+  /// Mixing: the particles of this species are tagged by their height at t = 0 (lower and upper
+  /// half); -1: no mixing analysis.
+  std::int32_t mixing_species = -1;
+  std::array<int, 3> mixing_cells{4, 1, 4};  ///< Lacey sample cells per axis over mixing_region.
+  std::size_t mixing_region = 0;             ///< Index into Scene::regions (0: the whole domain).
+  std::size_t min_particles = 5;             ///< Sample cells with fewer tagged-species particles are skipped.
+  /// Cells per axis of the local fields (solid fraction, granular temperature, kinetic-theory
+  /// collision frequency) over the whole domain; {0, 0, 0}: cells of about 4 largest diameters.
+  std::array<int, 3> field_cells{0, 0, 0};
+};
+
 struct Scene {
   std::string file;           ///< Name used in messages.
   std::string text;           ///< Scene text as run (re-serialized when --set changed it).
@@ -91,7 +105,14 @@ struct Scene {
   GasSettings gas;            ///< [gas]; coupling None when absent.
   double end_time = 0;        ///< s.
   OutputSchedule output;
+  AnalysisSettings analysis;  ///< [analysis].
 };
+
+/// The index of the species named by the string at `key` (a SceneError naming the choices if
+/// none has that name); for the section readers.
+std::uint32_t species_index(TableReader& t, std::string_view key, const Scene& scene);
+/// The index into scene.regions of the region named at `key` ("domain" when absent).
+std::size_t region_index(TableReader& t, std::string_view key, const Scene& scene);
 
 /// Parses and validates a scene text. `overrides` are "key=value" assignments applied to the
 /// table first; `seed`, when given, replaces initial.seed. Throws SceneError.

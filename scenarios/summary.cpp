@@ -29,8 +29,7 @@ void TimeAverages::sample(const Simulator& sim) {
   last_root_ = root;
 }
 
-namespace {
-std::string quoted(const std::string& s) {
+std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
     if (c == '"' || c == '\\') {
@@ -47,8 +46,9 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
-std::string number(double x) { return std::isfinite(x) ? format_number(x) : "null"; }
+std::string json_number(double x) { return std::isfinite(x) ? format_number(x) : "null"; }
 
+namespace {
 /// Enskog applies to a homogeneous periodic gas: no gravity, every axis periodic, no walls.
 bool enskog_applies(const System& system) {
   return !system.flight.has_gravity() && system.walls.empty() && system.domain.periodic[0] &&
@@ -71,21 +71,21 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
 
   std::ostringstream j;
   j << "{\n";
-  j << "  \"carom_version\": " << quoted(kVersion) << ",\n";
-  j << "  \"scene\": " << quoted(scene.name) << ",\n";
-  j << "  \"status\": " << quoted(stretch.status) << ",\n";
-  j << "  \"message\": " << quoted(stretch.message) << ",\n";
-  j << "  \"start_time\": " << number(stretch.start_time) << ",\n";
-  j << "  \"end_time\": " << number(sim.time()) << ",\n";
-  j << "  \"wall_seconds\": " << number(stretch.wall_seconds) << ",\n";
+  j << "  \"carom_version\": " << json_string(kVersion) << ",\n";
+  j << "  \"scene\": " << json_string(scene.name) << ",\n";
+  j << "  \"status\": " << json_string(stretch.status) << ",\n";
+  j << "  \"message\": " << json_string(stretch.message) << ",\n";
+  j << "  \"start_time\": " << json_number(stretch.start_time) << ",\n";
+  j << "  \"end_time\": " << json_number(sim.time()) << ",\n";
+  j << "  \"wall_seconds\": " << json_number(stretch.wall_seconds) << ",\n";
   j << "  \"particles\": " << sim.particle_count() << ",\n";
   j << "  \"events\": " << events << ",\n";
   j << "  \"collisions\": " << collisions << ",\n";
   j << "  \"events_total\": " << now.events << ",\n";
   j << "  \"collisions_total\": " << now.collisions() << ",\n";
   const double wall = stretch.wall_seconds > 0 ? stretch.wall_seconds : NAN;
-  j << "  \"events_per_second\": " << number(events / wall) << ",\n";
-  j << "  \"collisions_per_second\": " << number(collisions / wall) << ",\n";
+  j << "  \"events_per_second\": " << json_number(events / wall) << ",\n";
+  j << "  \"collisions_per_second\": " << json_number(collisions / wall) << ",\n";
 
   // Rate per particle of s with t: each s-s collision involves two particles of s.
   j << "  \"collision_rate_per_particle\": {";
@@ -93,8 +93,8 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
     for (std::size_t t = 0; t < S; ++t, first = 0) {
       const double count = static_cast<double>(now.pair(s, t) - before.pair(s, t)) * (s == t ? 2.0 : 1.0);
       const double rate = per_species[s] > 0 && dt > 0 ? count / (static_cast<double>(per_species[s]) * dt) : NAN;
-      j << (first ? "" : ",") << "\n    " << quoted(system.species[s].name + "-" + system.species[t].name) << ": "
-        << number(rate);
+      j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "-" + system.species[t].name) << ": "
+        << json_number(rate);
     }
   j << "\n  },\n";
 
@@ -107,8 +107,8 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
     j << "{";
     for (std::size_t s = 0, first = 1; s < S; ++s)
       for (std::size_t t = 0; t < S; ++t, first = 0)
-        j << (first ? "" : ",") << "\n    " << quoted(system.species[s].name + "-" + system.species[t].name) << ": "
-          << number(enskog_frequency(mixture, s, t, 1.0) * root_t);
+        j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "-" + system.species[t].name) << ": "
+          << json_number(enskog_frequency(mixture, s, t, 1.0) * root_t);
     j << "\n  },\n";
   } else {
     j << "null,\n";
@@ -117,15 +117,15 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
   j << "  \"wall_collisions\": {";
   for (std::size_t s = 0, first = 1; s < S; ++s)
     for (std::size_t w = 0; w < W; ++w, first = 0)
-      j << (first ? "" : ",") << "\n    " << quoted(system.species[s].name + "@" + system.walls[w].name) << ": "
+      j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "@" + system.walls[w].name) << ": "
         << (now.wall(s, w) - before.wall(s, w));
   j << (S * W > 0 ? "\n  " : "") << "},\n";
   j << "  \"wall_force\": {";
   for (std::size_t w = 0; w < W; ++w) {
     const Eigen::Vector3d force = dt > 0 ? Eigen::Vector3d((now.wall_impulse[w] - before.wall_impulse[w]) / dt)
                                          : Eigen::Vector3d::Constant(NAN);
-    j << (w ? "," : "") << "\n    " << quoted(system.walls[w].name) << ": [" << number(force.x()) << ", "
-      << number(force.y()) << ", " << number(force.z()) << "]";
+    j << (w ? "," : "") << "\n    " << json_string(system.walls[w].name) << ": [" << json_number(force.x()) << ", "
+      << json_number(force.y()) << ", " << json_number(force.z()) << "]";
   }
   j << (W ? "\n  " : "") << "},\n";
 
@@ -133,14 +133,14 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
   const double kinetic = stretch.averages.kinetic_energy();
   const double p_kin = 2.0 * kinetic / (3.0 * volume);
   const double p_coll = dt > 0 ? (now.virial - before.virial).trace() / (3.0 * volume * dt) : NAN;
-  j << "  \"mean_temperature\": " << number(n > 0 ? 2.0 * kinetic / (3.0 * static_cast<double>(n)) : NAN) << ",\n";
-  j << "  \"pressure\": {\"kinetic\": " << number(p_kin) << ", \"collisional\": " << number(p_coll)
-    << ", \"total\": " << number(p_kin + p_coll) << "},\n";
+  j << "  \"mean_temperature\": " << json_number(n > 0 ? 2.0 * kinetic / (3.0 * static_cast<double>(n)) : NAN) << ",\n";
+  j << "  \"pressure\": {\"kinetic\": " << json_number(p_kin) << ", \"collisional\": " << json_number(p_coll)
+    << ", \"total\": " << json_number(p_kin + p_coll) << "},\n";
   const Energies e = sim.energies();
-  j << "  \"energy\": {\"translational\": " << number(e.translational) << ", \"rotational\": " << number(e.rotational)
-    << ", \"potential\": " << number(e.potential) << ", \"dissipated\": " << number(e.dissipated) << "},\n";
+  j << "  \"energy\": {\"translational\": " << json_number(e.translational) << ", \"rotational\": " << json_number(e.rotational)
+    << ", \"potential\": " << json_number(e.potential) << ", \"dissipated\": " << json_number(e.dissipated) << "},\n";
   j << "  \"simulated_seconds_per_wall_second\": "
-    << number(stretch.wall_seconds > 0 ? dt / stretch.wall_seconds : NAN);
+    << json_number(stretch.wall_seconds > 0 ? dt / stretch.wall_seconds : NAN);
   if (stretch.gas != nullptr) {
     const CouplingTimes& t = stretch.gas->times();
     const CouplingTimes& t0 = stretch.gas_start;
@@ -148,10 +148,11 @@ std::string summary_json(const Simulator& sim, const Scene& scene, const RunStre
                  interpolation = t.interpolation - t0.interpolation;
     j << ",\n  \"gas\": {\"fluid_steps\": " << (t.steps - t0.steps)
       << ", \"unconverged_steps\": " << (t.unconverged_steps - t0.unconverged_steps)
-      << ", \"mapping_seconds\": " << number(mapping) << ", \"solve_seconds\": " << number(solve)
-      << ", \"interpolation_seconds\": " << number(interpolation)
-      << ", \"event_seconds\": " << number(stretch.wall_seconds - mapping - solve - interpolation) << "}";
+      << ", \"mapping_seconds\": " << json_number(mapping) << ", \"solve_seconds\": " << json_number(solve)
+      << ", \"interpolation_seconds\": " << json_number(interpolation)
+      << ", \"event_seconds\": " << json_number(stretch.wall_seconds - mapping - solve - interpolation) << "}";
   }
+  if (!stretch.analysis_json.empty()) j << ",\n  \"analysis\": " << stretch.analysis_json;
   j << "\n}\n";
   return j.str();
 }

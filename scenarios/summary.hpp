@@ -25,6 +25,10 @@
 ///                            its iteration limit), mapping_seconds, solve_seconds,
 ///                            interpolation_seconds (wall time of each part of the fluid steps),
 ///                            event_seconds (the rest of the wall time: the particles' events)}
+///   analysis                 the run's analysis from t = 0 (run_analysis.hpp): mixing {rate,
+///                            time_to_m08, ...}, dispersion, collision_frequency (measured,
+///                            per particle, whole run), kinetic_theory_frequency,
+///                            granular_temperature, segregation_index, mechanism
 #include <chrono>
 #include <string>
 
@@ -33,6 +37,11 @@
 #include "scene.hpp"
 
 namespace carom {
+
+/// A JSON string literal (quotes and control characters escaped).
+std::string json_string(const std::string& text);
+/// A JSON number, shortest exact form; null for NaN and infinities.
+std::string json_number(double x);
 
 /// Time integrals, by the trapezoid rule over the instants the run loop samples.
 class TimeAverages {
@@ -61,6 +70,7 @@ struct RunStretch {
   TimeAverages averages;
   const GasCoupling* gas = nullptr;    ///< The run's gas, if any.
   CouplingTimes gas_start;             ///< Its timers when the stretch began.
+  std::string analysis_json;           ///< The "analysis" object (run_analysis.hpp); empty: none.
 };
 
 /// The summary as JSON text.

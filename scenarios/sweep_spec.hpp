@@ -1,0 +1,68 @@
+#pragma once
+/// A sweep file: one scene run over the cartesian product of scene-key values, once per seed.
+///
+///   [sweep]
+///   scene = "fines_bed.toml"          # relative to the sweep file's folder
+///   out = "fines_sweep.out"           # default: the sweep file's stem + ".out" (current
+///   directory) seeds = [1, 2]                    # default: the scene's own initial.seed set = {
+///   "time.end" = 1.0 }        # fixed changes for every case (dotted keys, as --set)
+///   [[sweep.vary]]
+///   key = "species.fines.diameter"
+///   values = [3.3e-4, 2.5e-4]
+///
+/// Cases are numbered from 0: the first vary entry changes slowest, the seed fastest, so the
+/// cases of one combination of varied values (a "group") are consecutive. SWEEPS.md documents
+/// every key. Every mistake is a SceneError naming the file, the line, the key and what is
+/// allowed, like the scene reader's.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carom {
+
+/// One value a varied key takes.
+struct SweepValue {
+  std::string text;   ///< As TOML, passed to --set ("0.00033", "\"kick\"", "[0, 0, -9.81]").
+  std::string label;  ///< As shown in tables: text, strings without their quotes.
+  std::optional<double> number;  ///< The value when it is a number (integer or float).
+};
+
+/// A `[[sweep.vary]]` entry: a scene key and the values it takes.
+struct SweepAxis {
+  std::string key;                 ///< Dotted scene key, as for --set.
+  std::vector<SweepValue> values;  ///< At least one, no two alike.
+  /// True when every value is a number (tables store the axis as numbers, else as text).
+  bool numeric() const;
+};
+
+/// One run of the scene: its overrides and seed.
+struct SweepCase {
+  std::size_t index = 0;               ///< 0-based case number (directory cases/NNNN).
+  std::size_t group = 0;               ///< Index of its combination of varied values.
+  std::vector<std::size_t> choice;     ///< Per axis: index into its values.
+  std::uint64_t seed = 1;              ///< Passed as --seed.
+  std::vector<std::string> overrides;  ///< "key=value": the fixed set, then the varied keys.
+};
+
+/// A sweep file read and checked.
+struct SweepSpec {
+  std::string file;                  ///< The sweep file as given (for messages).
+  std::string scene;                 ///< Path of the scene file (relative paths resolved).
+  std::string out;                   ///< Output directory.
+  std::vector<std::string> fixed;    ///< "key=value" from sweep.set, in file order.
+  std::vector<SweepAxis> axes;       ///< The vary entries, in file order.
+  std::vector<std::uint64_t> seeds;  ///< Empty: the scene's own seed (filled in by the runner).
+
+  /// Number of combinations of varied values (1 when nothing varies).
+  std::size_t group_count() const;
+  /// Every case, in case order (needs seeds filled in).
+  std::vector<SweepCase> cases() const;
+  /// "key=label, key=label" of a group (for progress lines and messages).
+  std::string describe_group(std::size_t group) const;
+};
+
+/// Reads and checks a sweep file. Throws SceneError for anything wrong in it.
+SweepSpec read_sweep(const std::string& path);
+
+}  // namespace carom

@@ -22,7 +22,7 @@ std::vector<std::size_t> fill_counts(const Scene& scene) {
     } else if (fill->amount == Fill::Amount::VolumeFraction) {
       const double volume = scene.regions[fill->region].volume();
       counts[s] = static_cast<std::size_t>(std::llround(fill->value * volume / species[s].volume()));
-      if (counts[s] == 0)
+      if (counts[s] == 0 && fill->value > 0.0)
         throw SceneError(fill->where + ": species \"" + species[s].name + "\": volume_fraction " +
                          format_number(fill->value) + " of region \"" + scene.regions[fill->region].name +
                          "\" is less than one particle");
@@ -48,7 +48,7 @@ std::vector<std::size_t> fill_counts(const Scene& scene) {
     const auto& fill = scene.fills[s];
     if (!fill || fill->amount != Fill::Amount::MassFraction) continue;
     counts[s] = static_cast<std::size_t>(std::llround(fill->value * total_mass / species[s].mass()));
-    if (counts[s] == 0)
+    if (counts[s] == 0 && fill->value > 0.0)
       throw SceneError(fill->where + ": species \"" + species[s].name + "\": mass_fraction " +
                        format_number(fill->value) + " is less than one particle");
   }

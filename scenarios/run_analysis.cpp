@@ -218,7 +218,15 @@ SeriesRow RunAnalysis::sample(const Simulator& sim, const GasCoupling* gas) {
   row.push_back({"kinetic_collision_rate", S * S, kinetic_collision_frequencies(fields)});
   if (gas != nullptr) {
     std::vector<double> u, f, eps;
+    std::vector<std::size_t> count(S, 0);
+    for (std::uint32_t s : species) ++count[s];
     for (std::uint32_t s = 0; s < S; ++s) {
+      if (count[s] == 0) {  // a species with no particles sees nothing
+        u.insert(u.end(), 3, NAN);
+        f.insert(f.end(), 3, NAN);
+        eps.push_back(NAN);
+        continue;
+      }
       const Vec3 us = gas->mean_gas_velocity_at(s), fs = gas->mean_gas_force_on(s);
       u.insert(u.end(), {us.x(), us.y(), us.z()});
       f.insert(f.end(), {fs.x(), fs.y(), fs.z()});

@@ -146,7 +146,7 @@ void read_fills(Scene& scene, std::vector<TableReader>& species_tables) {
     }
     if (f->has("mass_fraction")) {
       fill.amount = Fill::Amount::MassFraction;
-      fill.value = f->number("mass_fraction", Range{0.0, 1.0, true, true, "this species' mass / mass of all solids"});
+      fill.value = f->number("mass_fraction", Range{0.0, 1.0, false, true, "this species' mass / mass of all solids (0: none, e.g. the reference case of a sweep)"});
       ++given;
     }
     if (given != 1)

@@ -127,7 +127,7 @@ TEST_F(Cli, UsageErrorsExitTwo) {
 
 TEST_F(Cli, CheckShippedScenes) {
   for (const char* name : {"elastic_gas", "haff_cooling", "bidisperse_gas", "settling_column", "settling_sphere",
-                           "packed_bed", "fluidized_bed", "column_1d", "bubbling_bed"}) {
+                           "packed_bed", "fluidized_bed", "column_1d", "bubbling_bed", "fines_bed"}) {
     EXPECT_EQ(carom("check '" + kScenes + "/" + name + ".toml'"), 0) << name << ": " << out_;
     EXPECT_NE(out_.find("grid"), std::string::npos);
   }
@@ -250,4 +250,29 @@ TEST_F(Cli, ResumeWithGasIsBitForBit) {
   ASSERT_FALSE(whole.gas_state.empty());
   EXPECT_TRUE(whole.gas_state == split.gas_state) << "the gas fields differ";
   EXPECT_GT(whole.state.statistics.pair_events, 100u) << "the beads must collide";
+}
+
+// The main job's analysis (mixing, dispersion, collision frequencies, mechanism) always covers
+// the run from t = 0: a run interrupted and resumed must report exactly what the uninterrupted
+// one reports, in summary.json's "analysis" and in report.md (tags and history are read back).
+TEST_F(Cli, FinesBedAnalysisSurvivesResume) {
+  const std::string bed = "'" + kScenes + "/fines_bed.toml' --quiet --set species.large.fill.count=200 "
+                          "--set initial.settle_time=0.05 --set output.sample_every=0.005 "
+                          "--set gas.boundaries.z_low.ramp_time=0.01";
+  ASSERT_EQ(carom("run " + bed + " --out whole --set time.end=0.04"), 0) << out_;
+  ASSERT_EQ(carom("run " + bed + " --out split --set time.end=0.02"), 0) << out_;
+  ASSERT_EQ(carom("resume split --end 0.04 --quiet"), 0) << out_;
+  auto analysis = [&](const char* run) {
+    const std::string summary = read(dir_ / run / "summary.json");
+    const std::size_t at = summary.find("\"analysis\":");
+    return at == std::string::npos ? std::string() : summary.substr(at);
+  };
+  const std::string whole = analysis("whole");
+  ASSERT_FALSE(whole.empty()) << "summary.json has no analysis";
+  for (const char* key : {"\"mixing\"", "\"dispersion\"", "\"collision_frequency\"", "\"kinetic_theory_frequency\"",
+                          "\"granular_temperature\"", "\"segregation_index\"", "\"mechanism\"", "\"large-fines\""})
+    EXPECT_NE(whole.find(key), std::string::npos) << key << " missing in " << whole;
+  EXPECT_EQ(whole, analysis("split"));
+  EXPECT_EQ(read(dir_ / "whole" / "report.md"), read(dir_ / "split" / "report.md"));
+  EXPECT_NE(read(dir_ / "whole" / "report.md").find("## Mechanism"), std::string::npos);
 }

@@ -78,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
                                            ShippedScene{"settling_column.toml", 400},
                                            ShippedScene{"settling_sphere.toml", 1}, ShippedScene{"packed_bed.toml", 1345},
                                            ShippedScene{"fluidized_bed.toml", 400}, ShippedScene{"column_1d.toml", 300},
-                                           ShippedScene{"bubbling_bed.toml", 2000}),
+                                           ShippedScene{"bubbling_bed.toml", 2000}, ShippedScene{"fines_bed.toml", 3207}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));
@@ -238,6 +238,33 @@ TEST(SceneErrors, FillsAndRegions) {
   // Too dense for random insertion: the message points to the lattice.
   expect_error(replace(kBase, "fill = { count = 20 }", "fill = { volume_fraction = 0.6 }"),
                {"bad.toml:8", "placed only", "arrangement = \"fcc\""});
+}
+
+TEST(SceneErrors, Analysis) {
+  const std::string mixing = kBase + "[analysis]\nmixing = { species = \"bead\", cells = [2, 2, 2] }\n";
+  Scene scene = parse_scene(mixing, "a.toml");
+  EXPECT_EQ(scene.analysis.mixing_species, 0);
+  EXPECT_EQ(scene.analysis.mixing_cells[1], 2);
+  EXPECT_EQ(scene.analysis.mixing_region, 0u);  // the whole domain by default
+  expect_error(replace(mixing, "species = \"bead\"", "species = \"baed\""),
+               {"bad.toml:12", "analysis.mixing.species", "did you mean \"bead\""});
+  expect_error(replace(mixing, "cells = [2, 2, 2]", "cells = [2, 0, 2]"), {"analysis.mixing.cells", "[1, 10000]"});
+  expect_error(replace(mixing, "cells = [2, 2, 2]", "cells = [2, 1.5, 2]"), {"analysis.mixing.cells", "whole numbers"});
+  expect_error(replace(mixing, "cells = [2, 2, 2]", "cells = [2, 2, 2], region = \"bed\""),
+               {"analysis.mixing.region = \"bed\"", "names no region"});
+  expect_error(kBase + "[analysis]\nmixin = { species = \"bead\" }\n", {"bad.toml:12", "unknown key 'analysis.mixin'"});
+  expect_error(kBase + "[analysis]\nfields = { cells = [0, 1, 1] }\n", {"analysis.fields.cells"});
+}
+
+TEST(Placement, MassFractionZeroIsNone) {
+  // A sweep's reference case: the species exists but has no particles.
+  const std::string text = kBase + "[[species]]\nname = \"fine\"\ndiameter = 0.5e-3\ndensity = 2500.0\nfill = { mass_fraction = 0.0 }\n";
+  Scene scene = parse_scene(text, "mix.toml");
+  EXPECT_EQ(fill_counts(scene)[1], 0u);
+  build_initial_state(scene);
+  EXPECT_EQ(scene.system.particles.size(), 20u);
+  // A tiny non-zero fraction that rounds to no particle is still an error.
+  expect_error(replace(text, "mass_fraction = 0.0", "mass_fraction = 1e-9"), {"less than one particle"});
 }
 
 // ---- placement ----------------------------------------------------------------------------

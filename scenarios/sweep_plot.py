@@ -4,7 +4,7 @@
 Group means against a varied key, with the standard deviation over seeds as error bars:
 
     sweep_plot.py OUT/summary.h5 --x species.fines.diameter --y analysis.mixing.rate \
-        --group species.fines.fill.value --out rate.png
+        --group species.fines.fill.mass_fraction --out rate.png
 
 Stacked bars of several metrics per group (a breakdown, e.g. collision frequencies by pair;
 shell-style patterns such as 'collision_rate_per_particle.*' pick several metrics at once):

@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -260,7 +261,8 @@ TEST_F(Sweep, FailingCaseIsRecordedAndTheOthersComplete) {
 // byte for byte the same), the second is resumed from its checkpoint, the third runs, and the
 // results equal those of a sweep that was never interrupted. For the resumed case, summary.json
 // describes only the resumed stretch (rates and counts since the checkpoint, summary.hpp), so
-// there only the whole-run quantities are compared: final time, totals and final energies.
+// there only the whole-run quantities are compared: final time, totals, final energies and the
+// analysis (collision frequencies, temperatures: always from t = 0).
 TEST_F(Sweep, InterruptedSweepResumesToTheSameResults) {
   file("long.toml",
        "[sweep]\nscene = \"" + kGas +
@@ -323,11 +325,15 @@ TEST_F(Sweep, InterruptedSweepResumesToTheSameResults) {
       EXPECT_EQ(a.rows[r][c], b.rows[r][c]) << "case " << r << ": " << name;
     const bool whole_run = name == "end_time" || name == "particles" || name == "events_total" ||
                            name == "collisions_total" || name.rfind("energy.", 0) == 0 ||
+                           name.rfind("analysis.", 0) == 0 ||  // the analysis covers t = 0 to the end
                            name == "status" || name == "seed" || name == "case";
     if (whole_run) {
       EXPECT_EQ(a.rows[1][c], b.rows[1][c]) << "resumed case 1: " << name;
     }
   }
+  EXPECT_TRUE(std::any_of(a.header.begin(), a.header.end(), [](const std::string& name) {
+    return name.rfind("analysis.collision_frequency.", 0) == 0;
+  })) << "the cases' analysis must be gathered";
 }
 
 // mpirun -n 2: the four cases are shared between the ranks, each run exactly once (one

@@ -221,7 +221,8 @@ SeriesRow RunAnalysis::sample(const Simulator& sim, const GasCoupling* gas) {
     std::vector<std::size_t> count(S, 0);
     for (std::uint32_t s : species) ++count[s];
     for (std::uint32_t s = 0; s < S; ++s) {
-      if (count[s] == 0) {  // a species with no particles sees nothing
+      // A species with no particles sees nothing; before the first fluid step nothing is seen.
+      if (count[s] == 0 || gas->times().steps == 0) {
         u.insert(u.end(), 3, NAN);
         f.insert(f.end(), 3, NAN);
         eps.push_back(NAN);

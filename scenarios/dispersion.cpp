@@ -1,5 +1,7 @@
 #include "dispersion.hpp"
 
+#include "log_least_squares.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -143,39 +145,6 @@ struct ConfinedRecord {
   }
 };
 
-/// Minimizer of F(D) = record.squared_residuals(D) in [exp(lo), exp(hi)], lo < hi, where the
-/// grid scan found the smallest F at the middle of the bracket.
-double refine_coefficient(const ConfinedRecord& record, double lo, double hi) {
-  const double g_lo = record.normal_equation(std::exp(lo));
-  const double g_hi = record.normal_equation(std::exp(hi));
-  if (g_lo > 0.0 && g_hi < 0.0) {
-    // F falls at lo and rises at hi: bisection on the normal equation, to round-off.
-    for (int iteration = 0; iteration < 200; ++iteration) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid <= lo || mid >= hi) break;
-      (record.normal_equation(std::exp(mid)) > 0.0 ? lo : hi) = mid;
-    }
-    return std::exp(0.5 * (lo + hi));
-  }
-  // Not bracketed by signs (flat or ragged F): golden-section search on F itself.
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = lo, b = hi;
-  double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-  double f1 = record.squared_residuals(std::exp(x1)), f2 = record.squared_residuals(std::exp(x2));
-  for (int iteration = 0; iteration < 200 && b - a > 1e-15 * (1.0 + std::abs(a)); ++iteration) {
-    if (f1 <= f2) {
-      b = x2, x2 = x1, f2 = f1;
-      x1 = b - golden * (b - a);
-      f1 = record.squared_residuals(std::exp(x1));
-    } else {
-      a = x1, x1 = x2, f1 = f2;
-      x2 = a + golden * (b - a);
-      f2 = record.squared_residuals(std::exp(x2));
-    }
-  }
-  return std::exp(0.5 * (a + b));
-}
-
 }  // namespace
 
 double confined_mean_squared_displacement(double time, double coefficient, double saturation_msd) {
@@ -212,30 +181,12 @@ Dispersion fit_confined_dispersion(const std::vector<double>& times, const std::
       std::find_if(record.time.begin(), record.time.end(), [](double t) { return t > 0.0; });
   if (record.time.end() - first_positive < 2) return result;
 
-  // Logarithmic grid of D over the range the data can resolve (H^2 = 6 S).
+  // D over the range the data can resolve (H^2 = 6 S).
   const double height_squared = 6.0 * saturation_msd;
-  const double lo = std::log(1e-8 * height_squared / record.time.back());
-  const double hi = std::log(1e2 * height_squared / *first_positive);
-  const double step = std::log(10.0) / 40.0;
-  const int intervals = std::max(2, static_cast<int>(std::ceil((hi - lo) / step)));
-  const auto grid_point = [&](int j) { return lo + (hi - lo) * j / intervals; };  // ln D
-  int best = 0;
-  double best_residual = std::numeric_limits<double>::infinity();
-  for (int j = 0; j <= intervals; ++j) {
-    const double residual = record.squared_residuals(std::exp(grid_point(j)));
-    // The last of equal values: a plateau of F reaching D_max (every positive sample saturated)
-    // means D is pinned there, not at the plateau's first point.
-    if (residual <= best_residual) best_residual = residual, best = j;
-  }
-
-  if (best == 0) {
-    result.coefficient = 0.0;
-  } else if (best == intervals) {
-    result.coefficient = std::numeric_limits<double>::infinity();
-  } else {
-    result.coefficient = refine_coefficient(record, grid_point(best - 1), grid_point(best + 1));
-    result.valid = true;
-  }
+  const LogFit fit = minimize_on_log_range(record, std::log(1e-8 * height_squared / record.time.back()),
+                                           std::log(1e2 * height_squared / *first_positive));
+  result.coefficient = fit.value;
+  result.valid = fit.valid;
   return result;
 }
 

@@ -1,5 +1,7 @@
 #include "mixing.hpp"
 
+#include "log_least_squares.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -107,39 +109,6 @@ struct MixingCurve {
   }
 };
 
-/// Minimizer of F(k) = curve.squared_residuals(k) in [exp(lo), exp(hi)], lo < hi, where the
-/// grid scan found the smallest F at the middle of the bracket.
-double refine_rate(const MixingCurve& curve, double lo, double hi) {
-  const double g_lo = curve.normal_equation(std::exp(lo));
-  const double g_hi = curve.normal_equation(std::exp(hi));
-  if (g_lo > 0.0 && g_hi < 0.0) {
-    // F falls at lo and rises at hi: bisection on the normal equation, to round-off.
-    for (int iteration = 0; iteration < 200; ++iteration) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid <= lo || mid >= hi) break;
-      (curve.normal_equation(std::exp(mid)) > 0.0 ? lo : hi) = mid;
-    }
-    return std::exp(0.5 * (lo + hi));
-  }
-  // Not bracketed by signs (flat or ragged F): golden-section search on F itself.
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = lo, b = hi;
-  double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-  double f1 = curve.squared_residuals(std::exp(x1)), f2 = curve.squared_residuals(std::exp(x2));
-  for (int iteration = 0; iteration < 200 && b - a > 1e-15 * (1.0 + std::abs(a)); ++iteration) {
-    if (f1 <= f2) {
-      b = x2, x2 = x1, f2 = f1;
-      x1 = b - golden * (b - a);
-      f1 = curve.squared_residuals(std::exp(x1));
-    } else {
-      a = x1, x1 = x2, f1 = f2;
-      x2 = a + golden * (b - a);
-      f2 = curve.squared_residuals(std::exp(x2));
-    }
-  }
-  return std::exp(0.5 * (a + b));
-}
-
 /// First time the curve reaches `level`, interpolating linearly between samples; NaN if never.
 double first_crossing(const MixingCurve& curve, double level) {
   for (std::size_t i = 0; i < curve.time.size(); ++i) {
@@ -171,29 +140,11 @@ MixingRate fit_mixing_rate(const std::vector<double>& times, const std::vector<d
       std::find_if(curve.time.begin(), curve.time.end(), [](double t) { return t > 0.0; });
   if (curve.time.size() < 3 || first_positive == curve.time.end()) return result;
 
-  // Logarithmic grid of k over the range the data can resolve.
-  const double lo = std::log(1e-4 / curve.time.back());
-  const double hi = std::log(1e3 / *first_positive);
-  const double step = std::log(10.0) / 40.0;
-  const int intervals = std::max(2, static_cast<int>(std::ceil((hi - lo) / step)));
-  const auto grid_point = [&](int j) { return lo + (hi - lo) * j / intervals; };  // ln k
-  int best = 0;
-  double best_residual = std::numeric_limits<double>::infinity();
-  for (int j = 0; j <= intervals; ++j) {
-    const double residual = curve.squared_residuals(std::exp(grid_point(j)));
-    // The last of equal values: a plateau of F reaching k_max (exp(-k t) underflowed at every
-    // positive sample) means k is pinned there, not at the plateau's first point.
-    if (residual <= best_residual) best_residual = residual, best = j;
-  }
-
-  if (best == 0) {
-    result.rate = 0.0;
-  } else if (best == intervals) {
-    result.rate = std::numeric_limits<double>::infinity();
-  } else {
-    result.rate = refine_rate(curve, grid_point(best - 1), grid_point(best + 1));
-    result.valid = true;
-  }
+  // k over the range the data can resolve.
+  const LogFit fit = minimize_on_log_range(curve, std::log(1e-4 / curve.time.back()),
+                                           std::log(1e3 / *first_positive));
+  result.rate = fit.value;
+  result.valid = fit.valid;
   result.time_to_08_fit = std::log(5.0) / result.rate;
   result.rms_residual = std::sqrt(curve.squared_residuals(result.rate) / double(curve.time.size()));
   return result;

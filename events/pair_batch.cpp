@@ -12,25 +12,29 @@
 namespace carom {
 
 namespace {
+// Every helper taking or returning a vector is forced inline: called out of line from the avx2
+// clone, a default-target helper would receive its 32-byte arguments under the other calling
+// convention (ymm registers against memory), which is what the -O0 debug build did.
+#define CAROM_LANES_INLINE inline __attribute__((always_inline))
 using Lanes = double __attribute__((vector_size(32)));
 using Mask = long long __attribute__((vector_size(32)));
 
-inline Lanes load(const double* p) {
+CAROM_LANES_INLINE Lanes load(const double* p) {
   Lanes v;
   __builtin_memcpy(&v, p, sizeof v);
   return v;
 }
-inline Lanes splat(double x) { return Lanes{x, x, x, x}; }
-inline Lanes select(Mask m, Lanes a, Lanes b) { return m ? a : b; }
+CAROM_LANES_INLINE Lanes splat(double x) { return Lanes{x, x, x, x}; }
+CAROM_LANES_INLINE Lanes select(Mask m, Lanes a, Lanes b) { return m ? a : b; }
 
 /// Maps one separation component to its nearest image, as Domain::minimum_image.
-inline Lanes nearest_image(Lanes s, double length) {
+CAROM_LANES_INLINE Lanes nearest_image(Lanes s, double length) {
   const Lanes half = splat(0.5 * length), l = splat(length);
   return select(s > half, s - l, select(s < -half, s + l, s));
 }
 
 template <bool kGravity, bool kImage>
-inline __attribute__((always_inline)) void contact_times_impl(const PairQuery& q, PairBatch& batch) {
+CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch) {
   const Lanes clock_a = splat(q.clock);
   const Lanes pax = splat(q.position.x()), pay = splat(q.position.y()), paz = splat(q.position.z());
   const Lanes vax = splat(q.velocity.x()), vay = splat(q.velocity.y()), vaz = splat(q.velocity.z());
@@ -92,5 +96,6 @@ CAROM_CONTACT_TIMES(true, false)
 CAROM_CONTACT_TIMES(true, true)
 
 #undef CAROM_CONTACT_TIMES
+#undef CAROM_LANES_INLINE
 
 }  // namespace carom

@@ -136,28 +136,58 @@ TEST(KickFlights, UnstableStepIsDetectedAndExplained) {
 namespace carom {
 namespace {
 
-// A bed of 800 glass beads (1 mm) in a pseudo-2-D column (16 mm wide, 4 mm deep, periodic in
-// depth) fluidized at U = 0.8 m/s (1.4 U_mf), averaged over 0.2 s (a sample every 1 ms):
-//  - momentum balance of the bed: the gas pressure drop (less the gas's own hydrostatic part)
-//    times the area, plus the forces of the distributor and the side walls on the beads, minus
-//    the rate of change of the bed's momentum, equals the buoyant weight W = sum m g (1 -
-//    rho_g/rho_p) within 3 % (the pressure drop is sampled, the wall impulses are exact sums:
-//    the sampling error of the mean with ~25 Pa fluctuations is ~2 %);
-//  - the bed is fluidized: the gas pressure drop carries at least 80 % of W/A. It does not
-//    carry all of it: this hard-sphere bed (TC model) in a narrow column oscillates as a plug
-//    and lands on the distributor part of the time, which then carries 4-12 % of the weight
-//    depending on the packing it started from (printed). Delta p = W/A to 2 % needs a bed
-//    that never touches the distributor; not reached here (see the closing note).
-// The pressure at the inlet face is extrapolated from the two lowest cells (2 mm each), which
-// lie inside the bed (11 mm deep at rest), so the extrapolation is exact for a uniform gradient.
+// Standard error of the mean of a time series by block averaging: the series is cut into
+// `blocks` equal blocks and the error is the spread of the block means over sqrt(blocks). It is
+// honest when each block is long against the series' correlation time; the pressure drop of a
+// bubbling bed oscillates with a period of about 0.1 s, so the blocks here last 0.25 s. (Shorter
+// blocks understate the error; for this signal the error estimate peaks at blocks of ~50 ms and
+// falls for longer ones, because most of the fluctuation is the rate of change of the bed's
+// momentum, which averages out.)
+double block_standard_error(const std::vector<double>& series, int blocks) {
+  const std::size_t length = series.size() / blocks;
+  std::vector<double> means(blocks, 0.0);
+  for (int b = 0; b < blocks; ++b)
+    for (std::size_t k = 0; k < length; ++k) means[b] += series[b * length + k] / length;
+  double mean = 0.0, variance = 0.0;
+  for (double m : means) mean += m / blocks;
+  for (double m : means) variance += (m - mean) * (m - mean) / (blocks - 1);
+  return std::sqrt(variance / blocks);
+}
+
+// A bubbling bed of 800 glass beads (1 mm) in a pseudo-2-D slab (16 mm wide, 4 mm deep, 60 mm
+// tall, periodic in x and y: no side walls, so the bed bubbles instead of rising and landing as
+// a plug between walls), fluidized at U = 1.6 m/s (about 3 U_mf; the closure's U_mf is
+// 0.56 m/s), averaged over 4 s after a 0.3 s start-up (a sample every 1 ms). Time-averaged, the
+// bed's weight is carried by the gas and by the walls it touches: W = Delta p A + F_distributor
+// + F_top - dP/dt, W = sum m g (1 - rho_g/rho_p) the buoyant weight, Delta p the gas pressure
+// drop less the gas's own hydrostatic part, P the bed's vertical momentum.
+//  - The balance closes within 1 %. Its statistical error is small (~0.05 %: the pressure drop
+//    fluctuates mostly with dP/dt, which the exact momentum term cancels, and the wall forces are
+//    exact sums of collision impulses). What is left is a bias of the sampled pressure drop: the
+//    balance measured 0.994-0.995 for four packings, most likely from the extrapolation of the
+//    pressure from the two outermost layers of cell centres to the inlet and outlet faces while
+//    the lowest layer is more porous than the next (no bead centre lies within a radius of the
+//    distributor).
+//  - The gas carries at least 95 % of W: Delta p A / W measured 0.961-0.968 for four packings
+//    (standard error 0.5-0.7 % each, block averaging over 16 blocks of 0.25 s; spread between
+//    packings 0.3 %). It does not reach W / A within 2 %: the beads at the distributor keep
+//    colliding with it (their granular pressure; ~5000 collisions/s), and the distributor carries
+//    2-3 % of W in every bed measured that fits a CI run (16 or 32 mm wide, U = 1.2-2.4 m/s,
+//    Gidaspow or Beetstra drag, e = 0.9 or 0.97, t_c = 1e-4 or 1e-5 s). A bed twice as deep
+//    (3200 beads, 32 mm wide) puts 1.4 % on the distributor and reaches 0.987 +- 0.008 over 6 s,
+//    but it slugs, and that run costs seven times this test.
+// The standard error must stay below 1 % for the two checks to mean something (the ratio is
+// then 3 standard errors or more above 0.95).
 TEST(FluidizedBed, PressureDropCarriesTheBuoyantWeight) {
-  CoupledRun run = start(
-      "fluidized_bed.toml",
-      {"species.glass.fill.count=800", "domain.max=[0.016, 0.004, 0.04]",
-       "regions.bed.max=[0.016, 0.004, 0.025]", "gas.cells=[8, 1, 20]",
-       "gas.boundaries.z_low.velocity=0.8", "gas.boundaries.z_low.ramp_time=0.02", "time.end=0.3"});
+  CoupledRun run = start("fluidized_bed.toml",
+                         {"species.glass.fill.count=800", "domain.max=[0.016, 0.004, 0.06]",
+                          "domain.periodic=[\"x\", \"y\"]", "regions.bed.max=[0.016, 0.004, 0.025]",
+                          "gas.cells=[8, 1, 30]", "gas.boundaries.z_low.velocity=1.6",
+                          "gas.boundaries.z_low.ramp_time=0.02", "time.end=4.3"});
   const System& system = run.sim->system();
-  const double rho_g = 1.2, g = 9.81, area = 0.016 * 0.004, height = 0.04, window = 0.2;
+  const double rho_g = 1.2, g = 9.81, area = 0.016 * 0.004, height = 0.06;
+  const double start_up = 0.3, window = 4.0;
+  const int samples = 4000, blocks = 16;
   double weight = 0.0;
   for (std::size_t i = 0; i < run.sim->particle_count(); ++i)
     weight += system.particles.mass[i] * g * (1.0 - rho_g / 2500.0);
@@ -167,32 +197,40 @@ TEST(FluidizedBed, PressureDropCarriesTheBuoyantWeight) {
       p += system.particles.mass[i] * run.sim->velocity(i).z();
     return p;
   };
-  auto wall_force_on_beads = [&] {  // cumulative impulse of the walls on the beads, z, N s
+  std::size_t distributor = system.walls.size();
+  for (std::size_t w = 0; w < system.walls.size(); ++w)
+    if (system.walls[w].name == "z_low") distributor = w;
+  ASSERT_LT(distributor, system.walls.size());
+  // Cumulative impulse of the walls on the beads along z, N s: the distributor's, and all others'.
+  auto wall_impulse_on_beads = [&](bool on_distributor) {
     double sum = 0.0;
-    for (const Vec3& impulse : run.sim->statistics().wall_impulse) sum -= impulse.z();
+    const auto& impulses = run.sim->statistics().wall_impulse;
+    for (std::size_t w = 0; w < impulses.size(); ++w)
+      if ((w == distributor) == on_distributor) sum -= impulses[w].z();
     return sum;
   };
-  run.sim->run_until(0.1);
-  const double momentum0 = bed_momentum(), walls0 = wall_force_on_beads();
-  std::vector<double> drops;
-  for (int k = 1; k <= 200; ++k) {
-    run.sim->run_until(0.1 + window * k / 200.0);
-    drops.push_back(run.gas->pressure_drop() - rho_g * g * height);
+  run.sim->run_until(start_up);
+  const double momentum0 = bed_momentum();
+  const double distributor0 = wall_impulse_on_beads(true), others0 = wall_impulse_on_beads(false);
+  std::vector<double> ratios;  // Delta p A / W at each sample
+  for (int k = 1; k <= samples; ++k) {
+    run.sim->run_until(start_up + window * k / samples);
+    ratios.push_back((run.gas->pressure_drop() - rho_g * g * height) * area / weight);
   }
-  double mean = 0.0;
-  for (double d : drops) mean += d / drops.size();
-  double variance = 0.0;
-  for (double d : drops) variance += (d - mean) * (d - mean) / (drops.size() - 1);
-  const double walls = (wall_force_on_beads() - walls0) / window;
-  const double acceleration = (bed_momentum() - momentum0) / window;
-  const double balance = (mean * area + walls - acceleration) / weight;
+  double ratio = 0.0;
+  for (double r : ratios) ratio += r / ratios.size();
+  const double error = block_standard_error(ratios, blocks);
+  const double on_distributor = (wall_impulse_on_beads(true) - distributor0) / window / weight;
+  const double on_other_walls = (wall_impulse_on_beads(false) - others0) / window / weight;
+  const double acceleration = (bed_momentum() - momentum0) / window / weight;
+  const double balance = ratio + on_distributor + on_other_walls - acceleration;
   std::printf(
-      "pressure drop %.2f Pa (std %.2f Pa), W/A %.2f Pa: ratio %.4f; walls carry %.4f of W, "
-      "bed momentum change %.4f of W; balance %.4f\n",
-      mean, std::sqrt(variance), weight / area, mean * area / weight, walls / weight,
-      acceleration / weight, balance);
-  EXPECT_NEAR(balance, 1.0, 0.03);
-  EXPECT_GT(mean * area / weight, 0.8) << "the bed is not fluidized";
+      "Delta p A / W = %.4f +- %.4f (block standard error, %d blocks of %.2f s); the distributor "
+      "carries %.4f of W, the other walls %.4f; bed momentum change %.4f of W; balance %.4f\n",
+      ratio, error, blocks, window / blocks, on_distributor, on_other_walls, acceleration, balance);
+  EXPECT_LT(error, 0.01) << "the mean pressure drop is too uncertain for the checks below";
+  EXPECT_NEAR(balance, 1.0, 0.01);
+  EXPECT_GT(ratio, 0.95) << "the gas does not carry the bed";
 }
 
 }  // namespace

@@ -11,18 +11,13 @@
 
 #include "core/rng.hpp"
 #include "scenarios/mixing.hpp"
+#include "analysis_support.hpp"
 #include "scenarios/sample_grid.hpp"
 
 namespace carom {
 namespace {
 
-SampleGrid unit_cube_grid(int nx, int ny, int nz) {
-  SampleGrid grid;
-  grid.lower = Vec3::Zero();
-  grid.upper = Vec3::Ones();
-  grid.cells = {nx, ny, nz};
-  return grid;
-}
+using test::unit_cube_grid;
 
 std::vector<Vec3> uniform_points(std::size_t count, Rng& rng) {
   std::vector<Vec3> points(count);

@@ -1,5 +1,8 @@
 #pragma once
-/// Helpers shared by the analysis tests (mixing, local fields).
+/// Helpers shared by the analysis and gas tests (mixing, dispersion, local fields, fluidized bed).
+#include <cmath>
+#include <vector>
+
 #include "scenarios/sample_grid.hpp"
 
 namespace carom::test {
@@ -11,6 +14,18 @@ inline SampleGrid unit_cube_grid(int nx, int ny, int nz) {
   grid.upper = Vec3::Ones();
   grid.cells = {nx, ny, nz};
   return grid;
+}
+
+/// Mean and standard deviation (1/(R-1)) of a sample.
+struct Spread {
+  double mean, deviation;
+};
+inline Spread spread_of(const std::vector<double>& values) {
+  double mean = 0.0, square = 0.0;
+  for (double v : values) mean += v;
+  mean /= double(values.size());
+  for (double v : values) square += (v - mean) * (v - mean);
+  return {mean, std::sqrt(square / double(values.size() - 1))};
 }
 
 }  // namespace carom::test

@@ -12,23 +12,15 @@
 #include <numbers>
 #include <vector>
 
+#include "analysis_support.hpp"
 #include "core/rng.hpp"
 #include "scenarios/dispersion.hpp"
 
 namespace carom {
 namespace {
 
-/// Mean and standard deviation (1/(R-1)) of a sample.
-struct Spread {
-  double mean, deviation;
-};
-Spread spread_of(const std::vector<double>& values) {
-  double mean = 0.0, square = 0.0;
-  for (double v : values) mean += v;
-  mean /= double(values.size());
-  for (double v : values) square += (v - mean) * (v - mean);
-  return {mean, std::sqrt(square / double(values.size() - 1))};
-}
+using test::Spread;
+using test::spread_of;
 
 // ---------------------------------------------------------------------------------------------
 // Mean squared displacement and the early-window fit (fit_dispersion)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "analysis_support.hpp"
 #include "fluid/drag.hpp"
 #include "scenarios/gas_run.hpp"
 #include "scenarios/scene.hpp"
@@ -148,10 +149,7 @@ double block_standard_error(const std::vector<double>& series, int blocks) {
   std::vector<double> means(blocks, 0.0);
   for (int b = 0; b < blocks; ++b)
     for (std::size_t k = 0; k < length; ++k) means[b] += series[b * length + k] / length;
-  double mean = 0.0, variance = 0.0;
-  for (double m : means) mean += m / blocks;
-  for (double m : means) variance += (m - mean) * (m - mean) / (blocks - 1);
-  return std::sqrt(variance / blocks);
+  return test::spread_of(means).deviation / std::sqrt(double(blocks));
 }
 
 // A bubbling bed of 800 glass beads (1 mm) in a pseudo-2-D slab (16 mm wide, 4 mm deep, 60 mm

@@ -25,17 +25,8 @@ std::vector<Vec3> uniform_points(std::size_t count, Rng& rng) {
   return points;
 }
 
-/// Mean and standard deviation (1/(R-1)) of a sample.
-struct Spread {
-  double mean, deviation;
-};
-Spread spread_of(const std::vector<double>& values) {
-  double mean = 0.0, square = 0.0;
-  for (double v : values) mean += v;
-  mean /= double(values.size());
-  for (double v : values) square += (v - mean) * (v - mean);
-  return {mean, std::sqrt(square / double(values.size() - 1))};
-}
+using test::Spread;
+using test::spread_of;
 
 // ---------------------------------------------------------------------------------------------
 // Sample grid: flat index order, closed upper face, outside points. Exact integer answers.

@@ -73,6 +73,14 @@ class HierarchicalGrid {
   int level_of(std::int32_t i) const { return level_[i]; }
   /// Cell coordinates of particle i on its level.
   const std::array<int, 3>& cell_of(std::int32_t i) const { return coords_[i]; }
+  /// How many particles come before i in its cell's list (0: the first). Scans visit a cell's
+  /// particles in this order, and a relax prediction's round-off depends on it, so a restored
+  /// grid must keep it (insert_at the particles in order of decreasing place).
+  int place_in_cell(std::int32_t i) const {
+    int place = 0;
+    for (std::int32_t j = prev_[i]; j >= 0; j = prev_[j]) ++place;
+    return place;
+  }
   /// Lower corner of particle i's cell, m.
   Vec3 cell_lower(std::int32_t i) const {
     const Level& grid = levels_[level_[i]];

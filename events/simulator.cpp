@@ -97,7 +97,15 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
     throw std::invalid_argument("saved state: the arrays do not all hold one entry per particle");
   grid_ = HierarchicalGrid(system_.domain, system_.particles.radius, options_.grid_level_ratio,
                            options_.grid_subdivision);
-  for (std::size_t i = 0; i < n; ++i) grid_.insert_at(static_cast<std::int32_t>(i), state.cells[i]);
+  // Rebuild every cell's list in its saved order: each insertion goes first, so the last place first.
+  std::vector<std::int32_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  if (state.places.size() == n)
+    std::stable_sort(order.begin(), order.end(),
+                     [&](auto a, auto b) { return state.places[a] > state.places[b]; });
+  else if (!state.places.empty())
+    throw std::invalid_argument("saved state: the cell-list places do not hold one entry per particle");
+  for (std::int32_t i : order) grid_.insert_at(i, state.cells[i]);
   has_gravity_ = system_.flight.has_gravity();
   relax_ = options_.flight_model == FlightModel::Relax;
   flights_ = std::move(state.flights);
@@ -126,7 +134,11 @@ EngineState Simulator::state() const {
   s.particles = system_.particles;
   const std::size_t n = system_.particles.size();
   s.cells.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
+  s.places.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
+    s.places[i] = grid_.place_in_cell(static_cast<std::int32_t>(i));
+  }
   s.events = events_;
   s.crossings = crossings_;
   s.flights = flights_;

@@ -81,6 +81,9 @@ struct PeriodicAction {
 struct EngineState {
   ParticleStore particles;                          ///< In the simulator's internal order.
   std::vector<std::array<int, 3>> cells;            ///< Grid cell of each particle.
+  /// Each particle's place in its cell's list (HierarchicalGrid::place_in_cell); empty: the
+  /// lists are rebuilt in particle order (checkpoints written before it was saved).
+  std::vector<std::int32_t> places;
   std::vector<Event> events;                        ///< Each particle's next pair/wall event.
   std::vector<Event> crossings;                     ///< Each particle's next cell crossing.
   std::vector<RelaxFlight> flights;                 ///< Relax model: each particle's flight.

@@ -69,6 +69,7 @@ void write_state(const h5::Group& group, const EngineState& s) {
   std::vector<std::int32_t> cells;
   for (const auto& c : s.cells) cells.insert(cells.end(), c.begin(), c.end());
   group.write("cells", cells, {n, 3});
+  group.write("cell_list_places", s.places);
 
   write_events(group.create_group("events"), s.events);
   write_events(group.create_group("crossings"), s.crossings);
@@ -141,6 +142,8 @@ EngineState read_state(const h5::Group& group) {
   s.cells.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     s.cells[i] = {cells[3 * i], cells[3 * i + 1], cells[3 * i + 2]};
+  if (group.contains("cell_list_places"))
+    s.places = group.read<std::int32_t>("cell_list_places", {n});
 
   s.events = read_events(group.open_group("events"), n);
   s.crossings = read_events(group.open_group("crossings"), n);

@@ -235,21 +235,29 @@ TEST_F(Cli, ResumeAfterSigintIsBitForBit) {
 }
 
 // A coupled run (gas solver, fluid steps as global events, relax flights) resumed from its
-// checkpoint ends in exactly the state of the uninterrupted run, particles and gas alike.
+// checkpoint ends in exactly the state of the uninterrupted run, particles and gas alike. Four
+// packings: a relax prediction's last bits depend on the order a cell's particles are examined
+// in (each candidate is searched up to the best time so far), so the checkpoint must keep the
+// cells' list order. Rebuilt in particle order instead, seed 1 here diverged in round-off, and
+// so did the fines bed of FinesBedAnalysisSurvivesResume for seeds 2, 3 and 4.
 TEST_F(Cli, ResumeWithGasIsBitForBit) {
-  const std::string bed = "'" + kScenes + "/fluidized_bed.toml' --quiet --set species.glass.fill.count=150 "
-                          "--set 'domain.max=[0.008, 0.004, 0.03]' --set 'regions.bed.max=[0.008, 0.004, 0.015]' "
-                          "--set 'gas.cells=[4, 1, 10]' --set gas.boundaries.z_low.ramp_time=0.01 "
-                          "--set initial.settle_time=0.05";
-  ASSERT_EQ(carom("run " + bed + " --out whole --set time.end=0.04"), 0) << out_;
-  ASSERT_EQ(carom("run " + bed + " --out split --set time.end=0.02"), 0) << out_;
-  ASSERT_EQ(carom("resume split --end 0.04 --quiet"), 0) << out_;
-  const Checkpoint whole = read_checkpoint((dir_ / "whole" / "checkpoint.h5").string());
-  const Checkpoint split = read_checkpoint((dir_ / "split" / "checkpoint.h5").string());
-  expect_identical(whole, split);
-  ASSERT_FALSE(whole.gas_state.empty());
-  EXPECT_TRUE(whole.gas_state == split.gas_state) << "the gas fields differ";
-  EXPECT_GT(whole.state.statistics.pair_events, 100u) << "the beads must collide";
+  for (int seed : {1, 2, 3, 4}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::string bed = "'" + kScenes + "/fluidized_bed.toml' --quiet --set species.glass.fill.count=150 "
+                            "--set 'domain.max=[0.008, 0.004, 0.03]' --set 'regions.bed.max=[0.008, 0.004, 0.015]' "
+                            "--set 'gas.cells=[4, 1, 10]' --set gas.boundaries.z_low.ramp_time=0.01 "
+                            "--set initial.settle_time=0.05 --seed " + std::to_string(seed);
+    const std::string whole_dir = "whole" + std::to_string(seed), split_dir = "split" + std::to_string(seed);
+    ASSERT_EQ(carom("run " + bed + " --out " + whole_dir + " --set time.end=0.04"), 0) << out_;
+    ASSERT_EQ(carom("run " + bed + " --out " + split_dir + " --set time.end=0.02"), 0) << out_;
+    ASSERT_EQ(carom("resume " + split_dir + " --end 0.04 --quiet"), 0) << out_;
+    const Checkpoint whole = read_checkpoint((dir_ / whole_dir / "checkpoint.h5").string());
+    const Checkpoint split = read_checkpoint((dir_ / split_dir / "checkpoint.h5").string());
+    expect_identical(whole, split);
+    ASSERT_FALSE(whole.gas_state.empty());
+    EXPECT_TRUE(whole.gas_state == split.gas_state) << "the gas fields differ";
+    EXPECT_GT(whole.state.statistics.pair_events, 100u) << "the beads must collide";
+  }
 }
 
 // The main job's analysis (mixing, dispersion, collision frequencies, mechanism) always covers

@@ -85,9 +85,16 @@ class GasCoupling {
   /// Lower corner of the gas grid, m, and its cell size, m.
   const Vec3& grid_lower() const { return domain_.lower; }
   Vec3 cell_size() const { return layout_.cell_size(); }
-  /// Mean gas pressure at the bottom face of the grid minus that at the top face (along z;
-  /// each extrapolated linearly from the two outermost layers of cells), Pa.
+  /// Mean gas pressure at the bottom face of the grid minus that at the top face (along z), Pa.
+  /// An inlet face's pressure is the lowest cells' plus the drop across the half cell between
+  /// the face and their centres (gas momentum: drag and weight); an outlet face's is the
+  /// outlet pressure; a closed side's is extrapolated from the two outermost layers.
   double pressure_drop() const;
+  /// Net rate at which the gas's z-momentum enters through the bottom and top sides, per unit
+  /// area of a z face of the grid, Pa (rho_g U^2 (1/eps_bottom - 1) for a bed with inlet U).
+  /// The force of the gas on the particles is pressure_drop() less the gas's weight per area
+  /// plus this.
+  double momentum_inflow() const;
   /// Mean interstitial gas velocity seen by the particles of species s at the last step, m/s.
   Vec3 mean_gas_velocity_at(std::uint32_t s) const;
   /// Mean force of the gas on a particle of species s at the last step: drag K_i (u_i - v_i)
@@ -110,6 +117,11 @@ class GasCoupling {
   /// Side s's jet profile at time t (the ramp applied), m/s.
   std::vector<double> scaled_profile(int side, double t) const;
   void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights);
+  /// Sets inlet_drop_ from the step's gas (porosity, drag coefficients, solid velocities).
+  void set_inlet_drop(const std::vector<double>& gas_porosity, const std::vector<double>& beta,
+                      const std::vector<Vec3>& solid_velocity);
+  /// Pressure gradient the particles of a cell feel, Pa/m.
+  Vec3 pressure_gradient(int cell) const;
   /// K_i (kg/s) of particle i from the closure at slip speed `slip` and porosity eps.
   double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
                           double slip) const;
@@ -134,6 +146,9 @@ class GasCoupling {
   std::vector<double> species_porosity_;         ///< Sum of eps_i per species (last step).
   std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
   Vec3 total_drag_ = Vec3::Zero();
+  /// Per cell of the lowest layer: pressure at a z_low inlet face minus that at the cell centre,
+  /// from the gas momentum of the half cell between them (drag and weight) at the last step, Pa.
+  std::vector<double> inlet_drop_;
   CouplingTimes times_;
 };
 

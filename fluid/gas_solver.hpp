@@ -197,6 +197,11 @@ class GasSolver {
   double mass_imbalance() const { return mass_imbalance_; }
   /// Net volume flow of gas out through side s (negative: inflow), m^3/s, last step.
   double boundary_outflow(int side) const;
+  /// Rate at which gas momentum along side s's normal axis enters through side s, N:
+  /// rho_g sum over its faces of eps A u^2 (negative on a high side: momentum along +axis that
+  /// leaves); 0 on closed and periodic sides. With the gas's weight it is what separates the
+  /// pressure drop across the grid from the force of the gas on the particles.
+  double momentum_inflow(int side) const;
   /// The grid.
   const GasGrid& grid() const { return grid_; }
 

@@ -87,6 +87,22 @@ double GasSolver::boundary_outflow(int side) const {
   return outflow_.at(side);
 }
 
+double GasSolver::momentum_inflow(int side) const {
+  const GasLayout& layout = *layout_;
+  const int a = side / 2;
+  const bool high = side % 2 == 1;
+  double sum = 0.0;
+  for (int f = 0; f < layout.face_count[a]; ++f) {
+    const int left = layout.left[a][f], right = layout.right[a][f];
+    const bool on_side = high ? (left >= 0 && right < 0) : (left < 0 && right >= 0);
+    if (!on_side || layout.area[a][f] == 0.0) continue;
+    const double eps = has_old_porosity_ ? face_porosity(a, f, old_porosity_) : 1.0;
+    const double u = velocity_[a][f];
+    sum += eps * layout.area[a][f] * u * u;
+  }
+  return (high ? -1.0 : 1.0) * gas_.density * sum;
+}
+
 std::vector<double> GasSolver::save_state() const {
   std::vector<double> state;
   for (int a = 0; a < 3; ++a) state.insert(state.end(), velocity_[a].begin(), velocity_[a].end());

@@ -38,11 +38,15 @@ struct SeriesLayout {
   std::vector<std::pair<std::string, hsize_t>> counters;
 };
 
-/// Time series of a run with a gas: pressure drop over the domain (Pa; mean pressure of the
-/// lowest layer of gas cells minus the highest, along z), superficial inlet velocity of each
-/// side that is an inlet (m/s, one column per side, 0 elsewhere), total drag on the particles (N).
-const std::vector<std::pair<std::string, hsize_t>> kGasSeries = {
-    {"gas_pressure_drop", 0}, {"gas_inlet_velocity", 6}, {"gas_drag_force", 3}};
+/// Time series of a run with a gas: pressure drop over the domain (Pa; mean pressure at the
+/// bottom face of the gas grid minus that at the top face, GasCoupling::pressure_drop),
+/// superficial inlet velocity of each side that is an inlet (m/s, one column per side, 0
+/// elsewhere), total drag on the particles (N), net rate of z-momentum the gas brings in through
+/// the bottom and top per unit area (Pa, GasCoupling::momentum_inflow).
+const std::vector<std::pair<std::string, hsize_t>> kGasSeries = {{"gas_pressure_drop", 0},
+                                                                 {"gas_inlet_velocity", 6},
+                                                                 {"gas_drag_force", 3},
+                                                                 {"gas_momentum_inflow", 0}};
 
 SeriesLayout series_layout(std::size_t species, std::size_t walls) {
   SeriesLayout layout;
@@ -367,16 +371,18 @@ void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas, const 
   }
   if (d.has_gas) {
     std::vector<double> inlet(6, 0.0);
-    double drop = 0.0;
+    double drop = 0.0, momentum_inflow = 0.0;
     Vec3 drag = Vec3::Zero();
     if (gas != nullptr) {
       for (int s = 0; s < 6; ++s) inlet[s] = gas->inlet_velocity(s, time);
       drop = gas->pressure_drop();
       drag = gas->total_drag();
+      momentum_inflow = gas->momentum_inflow();
     }
     put("gas_pressure_drop", std::vector<double>{drop});
     put("gas_inlet_velocity", inlet);
     put("gas_drag_force", std::vector<double>{drag.x(), drag.y(), drag.z()});
+    put("gas_momentum_inflow", std::vector<double>{momentum_inflow});
   }
   for (const SeriesColumn& column : extra) {
     if (!series.contains(column.name)) {

@@ -143,7 +143,8 @@ TEST(GasSolver, UniformColumnIsHydrostatic) {
 // falls linearly by rho_g g + beta u / eps per metre, which is exactly the classic superficial
 // Ergun gradient plus the gas weight. Exact at steady state; 1e-6 relative (the brief's bound)
 // is far above the solver tolerance 1e-10. The outlet half cell (p = 0 half a cell above the top
-// centre) and the pressure gradient handed to the particles are checked the same way.
+// centre) and the pressure gradient handed to the particles are checked the same way, and the
+// momentum flux through the inlet and the outlet (exact: a uniform flow).
 TEST(GasSolver, PackedBedPressureDropMatchesErgun) {
   const double eps = 0.4, diameter = 0.5e-3, superficial = 0.1, height = 0.1;
   const double u = superficial / eps, mu = kAir.viscosity, rho = kAir.density;
@@ -168,6 +169,11 @@ TEST(GasSolver, PackedBedPressureDropMatchesErgun) {
       EXPECT_NEAR(solver.pressure_gradient(c).z(), -gradient, 1e-6 * gradient);
       EXPECT_NEAR(solver.cell_velocity(c).z(), u, 1e-9 * u);
     }
+    // Momentum flux rho (eps A u) u: in at the inlet, out (negative inflow) at the outlet.
+    const double flux = rho * superficial * u * 0.02 * 0.02;
+    EXPECT_NEAR(solver.momentum_inflow(4), flux, 1e-9 * flux);
+    EXPECT_NEAR(solver.momentum_inflow(5), -flux, 1e-9 * flux);
+    EXPECT_EQ(solver.momentum_inflow(0), 0.0);  // a free-slip side: nothing crosses it
   }
 }
 

@@ -245,14 +245,28 @@ def measured_minimum_fluidization(inlet, drop, weight):
     return (-a + np.sqrt(a * a + 4 * b * weight)) / (2 * b)
 
 
+def carrying_pressure_drop(run):
+    """The part of the gas pressure drop that carries the particles, Pa: gas_pressure_drop less
+    the gas's own weight per area (rho_g |g| H) plus the net momentum per area the gas brings in
+    (gas_momentum_inflow; absent from files of older carom versions)."""
+    series = run["timeseries"]
+    lower, upper = run["domain/lower"][()], run["domain/upper"][()]
+    gravity = np.asarray(run["domain/gravity"][()])
+    height = upper[2] - lower[2]
+    drop = series["gas_pressure_drop"][()] - run["gas"].attrs["density"] * abs(gravity[2]) * height
+    if "gas_momentum_inflow" in series:
+        drop = drop + series["gas_momentum_inflow"][()]
+    return drop
+
+
 def plot_gas(run, path):
     series = run["timeseries"]
     t = series["time"][()]
-    drop = series["gas_pressure_drop"][()]
+    drop = carrying_pressure_drop(run)
     inlet = series["gas_inlet_velocity"][()].max(axis=1)
     weight = buoyant_weight_per_area(run)
     fig, (left, right) = plt.subplots(1, 2, figsize=(9.6, 3.8))
-    left.plot(t, drop, color=COLOURS[0], lw=1.0, label="pressure drop")
+    left.plot(t, drop, color=COLOURS[0], lw=1.0, label="pressure drop carrying the beads")
     left.axhline(weight, color="0.3", ls="--", lw=0.8, label=f"W/A = {weight:.4g} Pa")
     left.set_xlabel("$t$ (s)")
     left.set_ylabel(r"$\Delta p$ (Pa)")
@@ -260,7 +274,7 @@ def plot_gas(run, path):
     twin.plot(t, inlet, color=COLOURS[1], lw=1.0)
     twin.set_ylabel("inlet velocity $U$ (m/s)", color=COLOURS[1])
     twin.spines["right"].set_visible(True)
-    left.legend(loc="lower right")
+    left.legend(loc="upper left", fontsize="small")
     right.plot(inlet, drop, ".", ms=2, color=COLOURS[0], label="carom")
     right.axhline(weight, color="0.3", ls="--", lw=0.8)
     measured = measured_minimum_fluidization(inlet, drop, weight)

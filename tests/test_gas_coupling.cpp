@@ -183,7 +183,7 @@ test::Spread mean_and_error(const std::vector<double>& block_values) {
 // gas pressure drop that carries beads: the drop from the inlet face to the outlet face
 // (GasCoupling::pressure_drop) less the gas's own weight per area (rho_g g H) plus the net
 // z-momentum per area the gas brings in (GasCoupling::momentum_inflow: it enters the bed at the
-// interstitial U / eps and leaves the freeboard at U; rho_g U^2 (1/eps - 1) ~ 1 % of W/A here,
+// interstitial U / eps and leaves the freeboard at U; rho_g U^2 (1/eps - 1) = 0.7 % of W/A here,
 // negligible in a bed tens of times deeper).
 //  - The balance closes within 0.5 %: measured 1.0005-1.0006 for four packings (seeds 3-6). In
 //    expectation it is exact up to the discretisation (each bead's gas force is set at the start

@@ -86,7 +86,7 @@ def plot_mixing(run, run_path, path, dpi):
     names = [_text(n) for n in run["species/name"][()]]
 
     fig = plt.figure(figsize=(10, 4.2))
-    grid = fig.add_gridspec(1, 4, width_ratios=[1.3, 1.3, 0.6, 0.6], wspace=0.35)
+    grid = fig.add_gridspec(1, 4, width_ratios=[1.3, 1.3, 0.6, 0.6], wspace=0.4)
     ax = fig.add_subplot(grid[0])
     ax.plot(t, lacey, "o", ms=3, color="0.2", label="Lacey index")
     k = mixing.get("rate")
@@ -98,11 +98,12 @@ def plot_mixing(run, run_path, path, dpi):
     t08 = mixing.get("time_to_m08_fit")
     if t08 and t08 < 1.5 * t.max():
         ax.axvline(t08, color="C3", ls=":", lw=1)
-        ax.text(t08, 0.85, f" $t_{{0.8}}$ = {t08:.2g} s", color="C3", fontsize=8)
+        ax.text(t08, 0.0, f"$t_{{0.8}}$ = {t08:.2g} s ", color="C3", fontsize=8, ha="right")
     ax.set_ylim(-0.05, 1.1)
     ax.set_xlabel("$t$ (s)")
     ax.set_ylabel(f"Lacey index $M$ ({names[mixing_species]}, lower/upper half)")
-    ax.legend(loc="upper left")
+    # Legends below the panels: above them they hid the data.
+    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.16), fontsize=8)
 
     ax = fig.add_subplot(grid[1])
     ax.plot(t, msd * 1e6, "o", ms=3, color="0.2", label="measured")
@@ -116,7 +117,7 @@ def plot_mixing(run, run_path, path, dpi):
         ax.axhline(saturation * 1e6, color="0.6", ls=":", lw=1, label="saturation 2 Var($h$)")
     ax.set_xlabel("$t$ (s)")
     ax.set_ylabel("axial MSD about the mean (mm$^2$)")
-    ax.legend(loc="upper right")
+    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.16), fontsize=8)
 
     snapshots = sorted(run["snapshots"].keys())
     tagged = run["analysis/tagged"][()]

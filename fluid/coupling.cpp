@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <sstream>
 
 #include "drag.hpp"
@@ -83,7 +82,6 @@ GasCoupling::GasCoupling(const GasSettings& settings, const Domain& domain,
   closure_ = std::make_unique<DragClosure>(settings.closure, settings.fluidization_porosity,
                                            gravity.norm() > 0 ? gravity.norm() : 9.81);
   porosity_.assign(layout_.count(), 1.0);
-  inlet_drop_.assign(std::size_t(settings.cells[0]) * settings.cells[1], 0.0);
   sauter_.assign(layout_.count(), 0.0);
 }
 
@@ -114,15 +112,13 @@ std::vector<double> GasCoupling::save() const {
                                u.z(), f.x(), f.y(), f.z(), seen ? species_porosity_[s] : 0.0});
   }
   state.insert(state.end(), {total_drag_.x(), total_drag_.y(), total_drag_.z()});
-  state.insert(state.end(), inlet_drop_.begin(), inlet_drop_.end());
   return state;
 }
 
 void GasCoupling::restore(const std::vector<double>& state) {
   const std::size_t cells = porosity_.size();
   const std::size_t species = species_density_.size();
-  const std::size_t layer = std::size_t(settings_.cells[0]) * settings_.cells[1];
-  const std::size_t tail = 2 * cells + 8 * species + 3 + layer;
+  const std::size_t tail = 2 * cells + 8 * species + 3;
   if (state.size() < tail)
     throw std::invalid_argument("gas state: " + std::to_string(state.size()) +
                                 " values, too few for " + std::to_string(cells) + " cells and " +
@@ -145,7 +141,6 @@ void GasCoupling::restore(const std::vector<double>& state) {
     species_porosity_[s] = at[7];
   }
   total_drag_ = Vec3(at[0], at[1], at[2]);
-  inlet_drop_.assign(at + 3, at + 3 + static_cast<std::ptrdiff_t>(layer));
 }
 
 GasCoupling::~GasCoupling() = default;
@@ -202,7 +197,6 @@ void GasCoupling::step(double t, const ParticleStore& particles,
   const std::vector<double> gas_porosity = two_way ? porosity_ : std::vector<double>(cells, 1.0);
   last_report_ = solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
   if (!last_report_.converged) ++times_.unconverged_steps;
-  set_inlet_drop(gas_porosity, beta, solid_velocity);
   times_.solve += seconds_since(start);
 
   start = std::chrono::steady_clock::now();
@@ -270,7 +264,7 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
     for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
       const auto [c, fraction] = weights_[w];
       u += fraction * solver_->cell_velocity(c);
-      grad_p += fraction * pressure_gradient(c);
+      grad_p += fraction * solver_->pressure_gradient(c);
       eps += fraction * porosity_[c];
     }
     const Vec3& v = particles.velocity[i];
@@ -334,35 +328,6 @@ std::vector<Vec3> GasCoupling::velocity_field() const {
   return u;
 }
 
-void GasCoupling::set_inlet_drop(const std::vector<double>& gas_porosity,
-                                 const std::vector<double>& beta,
-                                 const std::vector<Vec3>& solid_velocity) {
-  const int layer = settings_.cells[0] * settings_.cells[1];
-  inlet_drop_.assign(layer, 0.0);
-  if (settings_.sides[4].kind != GasSide::Kind::Inlet) return;
-  const double half = 0.5 * layout_.cell_size().z();
-  const std::vector<double>& inlet_velocity = solver_->face_velocity(2);  // face c: below cell c
-  for (int c = 0; c < layer; ++c) {
-    // Steady momentum of the gas between the inlet face and the cell centre, whose drag is the
-    // half of the cell's that no face equation of the solver holds:
-    // eps (p_inlet - p_c) = h/2 [beta (u_inlet - v_s) - eps rho_g g].
-    const double drag = beta[c] * (inlet_velocity[c] - solid_velocity[c].z());
-    inlet_drop_[c] = half * (drag / gas_porosity[c] - settings_.density * gravity_.z());
-  }
-}
-
-Vec3 GasCoupling::pressure_gradient(int cell) const {
-  Vec3 gradient = solver_->pressure_gradient(cell);
-  const int layer = settings_.cells[0] * settings_.cells[1];
-  if (cell < layer && settings_.sides[4].kind == GasSide::Kind::Inlet && settings_.cells[2] > 1) {
-    // The lowest cells: the mean of the gradients across their two halves, as in every
-    // other cell (the solver has only the upper one: the inlet velocity is given).
-    const double lower = -inlet_drop_[cell] / (0.5 * layout_.cell_size().z());
-    gradient.z() = 0.5 * (gradient.z() + lower);
-  }
-  return gradient;
-}
-
 double GasCoupling::momentum_inflow() const {
   const Vec3 size = domain_.upper - domain_.lower;
   return (solver_->momentum_inflow(4) + solver_->momentum_inflow(5)) / (size.x() * size.y());
@@ -376,13 +341,14 @@ double GasCoupling::pressure_drop() const {
     return sum / layer;
   };
   if (nz < 2) return 0.0;
-  // The inlet face's pressure from the momentum of the half cell it feeds (the solver has no
-  // equation there: the inlet velocity is given); an outlet face's is the outlet pressure.
+  // An inlet face's pressure: the lowest cells' plus the drop across the half cell to the face
+  // (GasSolver::inlet_drop; z face c lies below cell c); an outlet face's: the outlet pressure.
   // Other sides: linear extrapolation from the two outermost layers of cell centres.
-  const double bottom =
-      settings_.sides[4].kind == GasSide::Kind::Inlet
-          ? mean(0) + std::accumulate(inlet_drop_.begin(), inlet_drop_.end(), 0.0) / layer
-          : 1.5 * mean(0) - 0.5 * mean(1);
+  double inlet_drop = 0.0;
+  for (int c = 0; c < layer; ++c) inlet_drop += solver_->inlet_drop(2, c);
+  const double bottom = settings_.sides[4].kind == GasSide::Kind::Inlet
+                            ? mean(0) + inlet_drop / layer
+                            : 1.5 * mean(0) - 0.5 * mean(1);
   const double top = settings_.sides[5].kind == GasSide::Kind::Outlet
                          ? settings_.sides[5].pressure
                          : 1.5 * mean(nz - 1) - 0.5 * mean(nz - 2);

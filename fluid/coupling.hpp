@@ -117,11 +117,6 @@ class GasCoupling {
   /// Side s's jet profile at time t (the ramp applied), m/s.
   std::vector<double> scaled_profile(int side, double t) const;
   void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights);
-  /// Sets inlet_drop_ from the step's gas (porosity, drag coefficients, solid velocities).
-  void set_inlet_drop(const std::vector<double>& gas_porosity, const std::vector<double>& beta,
-                      const std::vector<Vec3>& solid_velocity);
-  /// Pressure gradient the particles of a cell feel, Pa/m.
-  Vec3 pressure_gradient(int cell) const;
   /// K_i (kg/s) of particle i from the closure at slip speed `slip` and porosity eps.
   double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
                           double slip) const;
@@ -146,9 +141,6 @@ class GasCoupling {
   std::vector<double> species_porosity_;         ///< Sum of eps_i per species (last step).
   std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
   Vec3 total_drag_ = Vec3::Zero();
-  /// Per cell of the lowest layer: pressure at a z_low inlet face minus that at the cell centre,
-  /// from the gas momentum of the half cell between them (drag and weight) at the last step, Pa.
-  std::vector<double> inlet_drop_;
   CouplingTimes times_;
 };
 

@@ -71,6 +71,7 @@ GasSolver::GasSolver(GasGrid grid, GasProperties gas, std::array<GasBoundary, 6>
   gas_detail::GasWorkspace& work = *work_;
   for (int a = 0; a < 3; ++a) {
     velocity_[a].assign(layout.face_count[a], 0.0);
+    inlet_drop_[a].assign(layout.face_count[a], 0.0);
     work.momentum[a] = layout.momentum_pattern[a];
     const auto m = layout.unknown_face[a].size();
     work.rhs[a].setZero(m);
@@ -317,9 +318,32 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
         throw std::runtime_error(
             "gas solver: the velocities diverged (not finite); reduce the fluid time step or the "
             "under-relaxation factors");
+  set_inlet_drops(in);
   old_porosity_.assign(porosity.begin(), porosity.end());
   has_old_porosity_ = true;
   return report;
+}
+
+bool GasSolver::is_inlet_face(int axis, int face) const {
+  const GasLayout& layout = *layout_;
+  const int left = layout.left[axis][face], right = layout.right[axis][face];
+  if ((left < 0) == (right < 0) || layout.area[axis][face] == 0.0) return false;
+  return boundaries_[left < 0 ? 2 * axis : 2 * axis + 1].kind == GasBoundaryKind::Inlet;
+}
+
+void GasSolver::set_inlet_drops(const StepInputs& in) {
+  const GasLayout& layout = *layout_;
+  for (int a = 0; a < 3; ++a) {
+    const double half = 0.5 * layout.spacing[a];
+    for (int f = 0; f < layout.face_count[a]; ++f) {
+      if (!is_inlet_face(a, f)) continue;
+      const int left = layout.left[a][f], cell = left >= 0 ? left : layout.right[a][f];
+      // The half cell's drag is the half of the cell's beta that no face equation holds.
+      const double drag = in.beta[cell] * (velocity_[a][f] - in.solid_velocity[cell][a]);
+      const double drop = half * (drag / in.porosity[cell] - gas_.density * gravity_[a]);
+      inlet_drop_[a][f] = left < 0 ? drop : -drop;
+    }
+  }
 }
 
 void GasSolver::assemble_pressure_correction() {

@@ -177,9 +177,15 @@ class GasSolver {
   Vec3 cell_velocity(int cell) const;
   /// Pressure gradient at a cell centre, Pa/m: per axis, the mean of the gradients at its two
   /// faces as they enter the momentum equation ((p_R - p_L) / dx; on an outlet the boundary
-  /// pressure half a cell away). On a wall or inlet face the gradient of the cell's other face
-  /// is used (exact for a linear pressure), or rho_g g when that one is closed too.
+  /// pressure half a cell away; on an inlet, once a step has run, the gradient across the half
+  /// cell from inlet_drop). On a wall face the gradient of the cell's other face is used (exact
+  /// for a linear pressure), or rho_g g when that one is closed too.
   Vec3 pressure_gradient(int cell) const;
+  /// On an inlet face: the pressure at the face minus that at its cell's centre after the last
+  /// step, Pa, from the steady momentum of the gas in the half cell between them (the solver has
+  /// no equation at the face, whose velocity is given): eps (p_face - p_c) = +-h/2 [beta (u_face
+  /// - v_s) - eps rho_g g] along the face's axis (+ on a low side). 0 on other faces.
+  double inlet_drop(int axis, int face) const { return inlet_drop_[axis][face]; }
   /// Pressure at a cell centre, Pa.
   double pressure(int cell) const { return pressure_[cell]; }
   /// Pressure of every cell, Pa.
@@ -206,7 +212,8 @@ class GasSolver {
   const GasGrid& grid() const { return grid_; }
 
   /// Everything the next step depends on besides its inputs, as plain doubles: the face velocities
-  /// (x, y, z), the pressures, the old porosities and a flag for "has an old porosity".
+  /// (x, y, z), the pressures, the old porosities, a flag for "has an old porosity" and the
+  /// inlet faces' drops (what the pressure gradient next to an inlet is read from).
   /// restore_state(save_state()) reproduces the following steps bit for bit.
   std::vector<double> save_state() const;
   /// Restores a save_state() of a solver on the same grid; throws std::invalid_argument if the
@@ -229,6 +236,10 @@ class GasSolver {
   void assemble_pressure_correction();
   double continuity_imbalance(const StepInputs& in);
   double face_porosity(int axis, int face, std::span<const double> porosity) const;
+  /// Whether a face lies on an inlet side (open, with a cell on one side only).
+  bool is_inlet_face(int axis, int face) const;
+  /// Sets inlet_drop_ from the step's inputs and final velocities.
+  void set_inlet_drops(const StepInputs& in);
   /// Gradient of p across a face as the momentum equation sees it, Pa/m; false if the face has
   /// none (fixed faces).
   bool face_pressure_gradient(int axis, int face, double& gradient) const;
@@ -243,6 +254,7 @@ class GasSolver {
   std::array<std::vector<double>, 3> velocity_;     ///< Face velocities per axis, m/s.
   std::vector<double> pressure_;                    ///< Cell pressures, Pa.
   std::vector<double> old_porosity_;                ///< Porosity of the last step.
+  std::array<std::vector<double>, 3> inlet_drop_;   ///< Per face, see inlet_drop, Pa.
   bool has_old_porosity_ = false;
   double mass_imbalance_ = 0.0;
   std::array<double, 6> outflow_{};  ///< Volume flow out through each side, m^3/s.

@@ -47,9 +47,14 @@ void GasSolver::set_uniform_velocity(const Vec3& u) {
 
 bool GasSolver::face_pressure_gradient(int axis, int face, double& gradient) const {
   const GasLayout& layout = *layout_;
-  if (layout.unknown[axis][face] < 0) return false;
   const int left = layout.left[axis][face], right = layout.right[axis][face];
   const double h = layout.spacing[axis];
+  if (layout.unknown[axis][face] < 0) {
+    // Fixed faces: an inlet's gradient across its half cell, once a step has set the drop.
+    if (!has_old_porosity_ || !is_inlet_face(axis, face)) return false;
+    gradient = (left < 0 ? -inlet_drop_[axis][face] : inlet_drop_[axis][face]) / (0.5 * h);
+    return true;
+  }
   if (left >= 0 && right >= 0)
     gradient = (pressure_[right] - pressure_[left]) / h;
   else if (left >= 0)
@@ -112,13 +117,19 @@ std::vector<double> GasSolver::save_state() const {
   else
     state.insert(state.end(), pressure_.size(), 1.0);
   state.push_back(has_old_porosity_ ? 1.0 : 0.0);
+  for (int a = 0; a < 3; ++a)
+    for (int f = 0; f < layout_->face_count[a]; ++f)
+      if (is_inlet_face(a, f)) state.push_back(inlet_drop_[a][f]);
   return state;
 }
 
 void GasSolver::restore_state(std::span<const double> state) {
   const std::size_t cells = pressure_.size();
+  std::size_t inlet_faces = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int f = 0; f < layout_->face_count[a]; ++f) inlet_faces += is_inlet_face(a, f);
   const std::size_t expected =
-      velocity_[0].size() + velocity_[1].size() + velocity_[2].size() + 2 * cells + 1;
+      velocity_[0].size() + velocity_[1].size() + velocity_[2].size() + 2 * cells + 1 + inlet_faces;
   require(state.size() == expected, "a saved gas state of " + std::to_string(state.size()) +
                                         " values does not fit this grid (" +
                                         std::to_string(expected) + " expected)");
@@ -129,11 +140,15 @@ void GasSolver::restore_state(std::span<const double> state) {
   }
   std::copy(next, next + cells, pressure_.begin());
   next += cells;
-  has_old_porosity_ = state.back() != 0.0;
+  has_old_porosity_ = next[cells] != 0.0;
   if (has_old_porosity_)
     old_porosity_.assign(next, next + cells);
   else
     old_porosity_.clear();
+  next += cells + 1;
+  for (int a = 0; a < 3; ++a)
+    for (int f = 0; f < layout_->face_count[a]; ++f)
+      inlet_drop_[a][f] = is_inlet_face(a, f) ? *next++ : 0.0;
 }
 
 }  // namespace carom

@@ -128,6 +128,8 @@ class HierarchicalGrid {
   int own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells, bool& wrapped) const;
   /// First particle in flat cell `cell` of `level`, or -1.
   std::int32_t head(int level, std::int32_t cell) const { return levels_[level].head[cell]; }
+  /// The first particle of each cell of `level` (index by flat cell), -1 for an empty cell.
+  const std::int32_t* head_array(int level) const { return levels_[level].head.data(); }
   /// The particle after j in its cell's list, or -1.
   std::int32_t next(std::int32_t j) const { return next_[j]; }
   /// The neighbour lists (index by particle).

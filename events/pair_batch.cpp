@@ -27,6 +27,18 @@ CAROM_LANES_INLINE Lanes load(const double* p) {
 CAROM_LANES_INLINE Lanes splat(double x) { return Lanes{x, x, x, x}; }
 CAROM_LANES_INLINE Lanes select(Mask m, Lanes a, Lanes b) { return m ? a : b; }
 
+/// Four records' halves (rows) as four columns: columns[c][k] = rows[k][c].
+CAROM_LANES_INLINE void transpose(const Lanes (&rows)[4], Lanes (&columns)[4]) {
+  const Lanes even01 = __builtin_shuffle(rows[0], rows[1], Mask{0, 4, 2, 6});
+  const Lanes odd01 = __builtin_shuffle(rows[0], rows[1], Mask{1, 5, 3, 7});
+  const Lanes even23 = __builtin_shuffle(rows[2], rows[3], Mask{0, 4, 2, 6});
+  const Lanes odd23 = __builtin_shuffle(rows[2], rows[3], Mask{1, 5, 3, 7});
+  columns[0] = __builtin_shuffle(even01, even23, Mask{0, 1, 4, 5});
+  columns[1] = __builtin_shuffle(odd01, odd23, Mask{0, 1, 4, 5});
+  columns[2] = __builtin_shuffle(even01, even23, Mask{2, 3, 6, 7});
+  columns[3] = __builtin_shuffle(odd01, odd23, Mask{2, 3, 6, 7});
+}
+
 /// Maps one separation component to its nearest image, as Domain::minimum_image.
 CAROM_LANES_INLINE Lanes nearest_image(Lanes s, double length) {
   const Lanes half = splat(0.5 * length), l = splat(length);
@@ -40,14 +52,24 @@ CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch)
   const Lanes vax = splat(q.velocity.x()), vay = splat(q.velocity.y()), vaz = splat(q.velocity.z());
   const Lanes radius_a = splat(q.radius), zero = splat(0.0), never = splat(kNever);
   const Vec3 length = q.domain.length();
+  // Each lane's earliest time and the first candidate that has it (k rises along a lane).
+  Lanes earliest_time = never;
+  Mask earliest = Mask{-1, -1, -1, -1};
+  const Mask lane = Mask{0, 1, 2, 3};
   for (int k = 0; k < batch.count; k += 4) {
-    const Lanes clock_b = load(batch.clock + k);
+    // Candidate k + l's record is rows {position, clock} and {velocity, radius}.
+    Lanes rows[4], place[4], motion[4];
+    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->position.x());
+    transpose(rows, place);
+    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->velocity.x());
+    transpose(rows, motion);
+    const Lanes clock_b = place[3];
     const Lanes t_ref = select(clock_a > clock_b, clock_a, clock_b);
     const Lanes dt_a = t_ref - clock_a, dt_b = t_ref - clock_b;
-    const Lanes vbx = load(batch.vx + k), vby = load(batch.vy + k), vbz = load(batch.vz + k);
-    Lanes dx = pax - load(batch.px + k) + dt_a * vax - dt_b * vbx;
-    Lanes dy = pay - load(batch.py + k) + dt_a * vay - dt_b * vby;
-    Lanes dz = paz - load(batch.pz + k) + dt_a * vaz - dt_b * vbz;
+    const Lanes vbx = motion[0], vby = motion[1], vbz = motion[2];
+    Lanes dx = pax - place[0] + dt_a * vax - dt_b * vbx;
+    Lanes dy = pay - place[1] + dt_a * vay - dt_b * vby;
+    Lanes dz = paz - place[2] + dt_a * vaz - dt_b * vbz;
     Lanes ux = vax - vbx, uy = vay - vby, uz = vaz - vbz;
     if constexpr (kGravity) {
       const Lanes half = splat(0.5) * (dt_a * dt_a - dt_b * dt_b), lag = dt_a - dt_b;
@@ -64,7 +86,7 @@ CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch)
       if (q.domain.periodic[2]) dz = nearest_image(dz, length.z());
     }
     // sphere_contact_time, without branches.
-    const Lanes contact = radius_a + load(batch.radius + k);
+    const Lanes contact = radius_a + motion[3];
     const Lanes b = dx * ux + dy * uy + dz * uz;
     const Lanes c = dx * dx + dy * dy + dz * dz - contact * contact;
     const Lanes v2 = ux * ux + uy * uy + uz * uz;
@@ -76,7 +98,21 @@ CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch)
                                   select(discriminant <= zero, never, c / (-b + root))));
     const Lanes t = t_ref + s;
     __builtin_memcpy(batch.time + k, &t, sizeof t);
+    const Mask sooner = t < earliest_time;
+    earliest_time = select(sooner, t, earliest_time);
+    earliest = sooner ? lane + k : earliest;
   }
+  // Across lanes: the least time, and of equal times the first candidate.
+  int best = -1;
+  double best_time = kNever;
+  for (int l = 0; l < 4; ++l) {
+    if (earliest[l] < 0) continue;
+    if (earliest_time[l] < best_time || (earliest_time[l] == best_time && earliest[l] < best)) {
+      best_time = earliest_time[l];
+      best = static_cast<int>(earliest[l]);
+    }
+  }
+  batch.earliest = best;
 }
 }  // namespace
 

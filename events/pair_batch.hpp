@@ -3,10 +3,10 @@
 ///
 /// The pair test is the innermost loop of the program (more than half of the run time of a
 /// dense fluid). Tested one partner at a time it costs about 70 instructions and a branch that
-/// goes either way at random (approaching or receding); here the candidates' states are first
-/// copied into columns (structure of arrays), then the same arithmetic runs four partners at a
-/// time without branches (SSE2 on any x86-64, AVX2 where the processor has it, picked at run
-/// time). The operations and their order are those of pair_contact (below), so the times are
+/// goes either way at random (approaching or receding); here four candidates' records are
+/// loaded and transposed into columns in registers, then the same arithmetic runs on the four
+/// at once without branches (SSE2 on any x86-64, AVX2 where the processor has it, picked at
+/// run time). The operations and their order are those of pair_contact (below), so the times are
 /// the same to the last bit (test_predictions checks it), and no fused multiply-add is used.
 #include <cstdint>
 
@@ -50,31 +50,32 @@ inline double pair_contact(const Vec3& position_a, const Vec3& velocity_a, doubl
   return t_ref + sphere_contact_time(Vec3(dx, dy, dz), Vec3(ux, uy, uz), radius_a + radius_b);
 }
 
-/// A batch of candidate partners in columns, and their contact times with one particle.
+/// The part of a particle's state that a pair test reads, packed into one cache line: two
+/// halves of four doubles each, {position, clock} and {velocity, radius}. Predictions visit
+/// partners in no particular order, so one line per partner beats four separate arrays, and
+/// the batch test loads four records as four vectors per half and transposes them in
+/// registers.
+struct alignas(64) PairState {
+  Vec3 position;  ///< m, at `clock`.
+  double clock;   ///< s.
+  Vec3 velocity;  ///< m/s, at `clock`.
+  double radius;  ///< m.
+};
+static_assert(sizeof(PairState) == 64, "one cache line, two halves of four doubles");
+
+/// A batch of candidate partners (their records, not copies) and their contact times with one
+/// particle.
 struct PairBatch {
   /// Most candidates per batch (a multiple of the vector width, 4).
   static constexpr int kCapacity = 64;
-  alignas(32) double px[kCapacity], py[kCapacity], pz[kCapacity];  ///< Positions, m.
-  alignas(32) double vx[kCapacity], vy[kCapacity], vz[kCapacity];  ///< Velocities, m/s.
-  alignas(32) double clock[kCapacity];   ///< Clocks of the states, s.
-  alignas(32) double radius[kCapacity];  ///< m.
-  alignas(32) double time[kCapacity];    ///< Output: contact time with the query, s, or kNever.
-  std::int32_t partner[kCapacity];       ///< Particle index of each candidate.
-  int count = 0;                         ///< Candidates filled in.
+  const PairState* state[kCapacity];   ///< Each candidate's record.
+  alignas(32) double time[kCapacity];  ///< Output: contact time with the query, s, or kNever.
+  int count = 0;                       ///< Candidates filled in.
+  /// Output: the first candidate with the earliest contact time, or -1 if none ever touches.
+  int earliest = -1;
 
   /// Appends a candidate.
-  void add(std::int32_t j, const Vec3& position, const Vec3& velocity, double clock_j, double radius_j) {
-    px[count] = position.x();
-    py[count] = position.y();
-    pz[count] = position.z();
-    vx[count] = velocity.x();
-    vy[count] = velocity.y();
-    vz[count] = velocity.z();
-    clock[count] = clock_j;
-    radius[count] = radius_j;
-    partner[count] = j;
-    ++count;
-  }
+  void add(const PairState* record) { state[count++] = record; }
 };
 
 /// The particle whose contacts are sought, with what the batch test needs of the system.
@@ -82,12 +83,16 @@ struct PairQuery {
   Vec3 position, velocity;  ///< m, m/s, at `clock`.
   double clock;             ///< s.
   double radius;            ///< m.
+  /// A partner that never touches the query (its own state, radius 0: no relative motion),
+  /// to pad a batch to whole vectors.
+  PairState never_touching() const { return PairState{position, clock, velocity, 0.0}; }
   Vec3 gravity;             ///< m/s^2 (used with kGravity only).
   Domain domain;            ///< For the periodic images (used with kImage only).
 };
 
 /// Fills batch.time[k] for k < batch.count with
-/// pair_contact<kGravity, kImage>(query..., candidate k...), bit for bit.
+/// pair_contact<kGravity, kImage>(query..., candidate k...), bit for bit, and batch.earliest
+/// with the smallest k whose time is the least of them (-1 when all are kNever).
 template <bool kGravity, bool kImage>
 void contact_times(const PairQuery& query, PairBatch& batch);
 

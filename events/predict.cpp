@@ -107,42 +107,44 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
   const HotState& a = hot_[i];
   const PairQuery query{a.position, a.velocity, a.clock, a.radius, system_.flight.gravity,
                         system_.domain};
+  const HotState padding = query.never_touching();
   const HotState* hot = hot_.data();
-  const int level = grid_.level_of(i);
+  const std::int32_t* head = grid_.head_array(grid_.level_of(i));
   const std::int32_t* next = grid_.next_array();
+  // The first particle of every cell, loaded before any list is walked (independent loads).
+  std::int32_t first[HierarchicalGrid::kMaxBlock];
+  for (int c = 0; c < count; ++c) first[c] = head[cells[c]];
   std::int32_t best_partner = -1;
-  // Candidates are gathered into a batch (columns), their contact times computed four at a
-  // time, and the earliest picked in the order the cells were walked (as one at a time would).
+  // Candidates are gathered into a batch, their contact times computed four at a time, and the
+  // earliest picked in the order the cells were walked (as one at a time would: the first of
+  // equal times).
   PairBatch batch;
-  int c = 0;
-  std::int32_t j = -1;
-  for (;;) {
-    batch.count = 0;
-    while (batch.count < PairBatch::kCapacity) {
-      while (j < 0 && c < count) j = grid_.head(level, cells[c++]);
-      if (j < 0) break;
-      if (j != i) {
-        const HotState& b = hot[j];
-        batch.add(j, b.position, b.velocity, b.clock, b.radius);
-      }
-      j = next[j];
-    }
-    const int found = batch.count;
-    if (found == 0) break;
+  auto test_batch = [&](int found) {
+    batch.count = found;
     // Pad to whole vectors with partners that never touch (no relative velocity).
-    while (batch.count % 4 != 0) batch.add(-1, a.position, a.velocity, a.clock, 0.0);
+    while (batch.count % 4 != 0) batch.add(&padding);
     if (wrapped)
       contact_times<kGravity, true>(query, batch);
     else
       contact_times<kGravity, false>(query, batch);
-    for (int k = 0; k < found; ++k) {
-      if (batch.time[k] < best_time) {
-        best_time = batch.time[k];
-        best_partner = batch.partner[k];
+    const int k = batch.earliest;
+    if (k >= 0 && batch.time[k] < best_time) {
+      best_time = batch.time[k];
+      best_partner = static_cast<std::int32_t>(batch.state[k] - hot);
+    }
+  };
+  int found = 0;
+  for (int c = 0; c < count; ++c) {
+    for (std::int32_t j = first[c]; j >= 0; j = next[j]) {
+      if (j == i) continue;
+      batch.state[found] = hot + j;
+      if (++found == PairBatch::kCapacity) {
+        test_batch(found);
+        found = 0;
       }
     }
-    if (found < PairBatch::kCapacity) break;
   }
+  if (found > 0) test_batch(found);
   return best_partner;
 }
 

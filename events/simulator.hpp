@@ -12,6 +12,7 @@
 #include "events/calendar.hpp"
 #include "events/collapse.hpp"
 #include "events/event.hpp"
+#include "events/pair_batch.hpp"
 #include "events/statistics.hpp"
 
 namespace carom {
@@ -206,16 +207,10 @@ class Simulator {
   void book_collision(std::int32_t i, double t, std::int32_t partner_code);
   void check_pair_invariants(std::int32_t i, std::int32_t j, const Vec3& momentum_before) const;
 
-  /// The part of a particle's state that every prediction reads, packed into one cache line.
-  /// Predictions visit partners in no particular order, so one line per partner beats four
-  /// separate arrays (measured: see README, "Performance notes"). It mirrors the ParticleStore,
-  /// which stays the record of the state; refresh_hot(i) copies after every change.
-  struct alignas(64) HotState {
-    Vec3 position;   ///< m, at `clock`.
-    double clock;    ///< s.
-    Vec3 velocity;   ///< m/s, at `clock`.
-    double radius;   ///< m.
-  };
+  /// The part of a particle's state that every prediction reads, in one cache line. It mirrors
+  /// the ParticleStore, which stays the record of the state; refresh_hot(i) copies after every
+  /// change.
+  using HotState = PairState;
   void refresh_hot(std::int32_t i) {
     const ParticleStore& p = system_.particles;
     hot_[i] = HotState{p.position[i], p.clock[i], p.velocity[i], p.radius[i]};

@@ -5,10 +5,13 @@
 // with pair_contact on the same inputs: random states with and without gravity and periodic
 // images, clocks that differ, approaching, receding, missing, grazing, touching and slightly
 // overlapping pairs, and batches of every length 1..kCapacity (the caller pads to whole vectors
-// with a partner at rest relative to the query, which must never touch).
+// with a partner at rest relative to the query, which must never touch). The batch's earliest
+// candidate must be the one a loop in order picks: the first of equal times (copies of a
+// candidate in another lane make ties).
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <vector>
 
 #include "core/rng.hpp"
 #include "events/pair_batch.hpp"
@@ -33,6 +36,8 @@ void check_random_batches(std::uint64_t seed) {
                     Vec3(uniform(-2, 2), uniform(-2, 2), uniform(-2, 2)), uniform(0.0, 1.0),
                     uniform(0.2, 0.6), gravity, domain};
     PairBatch batch;
+    std::vector<PairState> records(PairBatch::kCapacity);
+    const PairState padding = query.never_touching();
     const int count = 1 + round % PairBatch::kCapacity;
     for (int k = 0; k < count; ++k) {
       const int kind = k % 5;
@@ -52,15 +57,23 @@ void check_random_batches(std::uint64_t seed) {
         position.x() += domain.length().x() * (k % 2 ? 1.0 : -1.0);
         position.z() -= domain.length().z();
       }
-      batch.add(k, position, velocity, clock, radius);
+      records[k] = PairState{position, clock, velocity, radius};
+      // A copy of an earlier candidate (another lane): equal times, the first must be chosen.
+      if (round % 3 == 0 && k % 4 == 3) records[k] = records[k - 3];
+      batch.add(&records[k]);
     }
-    while (batch.count % 4 != 0) batch.add(-1, query.position, query.velocity, query.clock, 0.0);
+    while (batch.count % 4 != 0) batch.add(&padding);
     contact_times<kGravity, kImage>(query, batch);
+    int first_earliest = -1;  // what a loop over the candidates in order picks
+    for (int k = 0; k < batch.count; ++k)
+      if (batch.time[k] < (first_earliest < 0 ? kNever : batch.time[first_earliest]))
+        first_earliest = k;
+    ASSERT_EQ(batch.earliest, first_earliest) << "round " << round;
     for (int k = 0; k < batch.count; ++k) {
+      const PairState& b = *batch.state[k];
       const double expected = pair_contact<kGravity, kImage>(
-          query.position, query.velocity, query.clock, query.radius,
-          Vec3(batch.px[k], batch.py[k], batch.pz[k]), Vec3(batch.vx[k], batch.vy[k], batch.vz[k]),
-          batch.clock[k], batch.radius[k], gravity, domain);
+          query.position, query.velocity, query.clock, query.radius, b.position, b.velocity,
+          b.clock, b.radius, gravity, domain);
       ASSERT_TRUE(same_bits(batch.time[k], expected)) << "candidate " << k << ": batch "
                                                       << batch.time[k] << " scalar " << expected;
       if (k >= count) {

@@ -145,11 +145,22 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
     if (total > 2.0e8)
       throw std::invalid_argument("the cell grid for diameter " + std::to_string(d) + " m needs " +
                                   std::to_string(total) + " cells; the domain is too large");
-    grid.head.assign(static_cast<std::size_t>(total), -1);
+    for (int k = 0; k < 3; ++k) grid.padded[k] = grid.cells[k] + 2 * m;
+    grid.head.assign(std::size_t(grid.padded[0]) * grid.padded[1] * grid.padded[2], -1);
+    const auto offset = [&](int dx, int dy, int dz) {
+      return dx + grid.padded[0] * (dy + grid.padded[1] * dz);
+    };
     for (int dz = -m; dz <= m; ++dz)
       for (int dy = -m; dy <= m; ++dy)
-        for (int dx = -m; dx <= m; ++dx)
-          grid.block_offsets.push_back(dx + grid.cells[0] * (dy + grid.cells[1] * dz));
+        for (int dx = -m; dx <= m; ++dx) {
+          grid.block_offsets.push_back(offset(dx, dy, dz));
+          // The far face layers, in the block's order (z, then y, then x).
+          const int d[3] = {dx, dy, dz};
+          for (int k = 0; k < 3; ++k) {
+            if (d[k] == -m) grid.slab_offsets[2 * k].push_back(offset(dx, dy, dz));
+            if (d[k] == m) grid.slab_offsets[2 * k + 1].push_back(offset(dx, dy, dz));
+          }
+        }
     levels_.push_back(std::move(grid));
   }
   const std::size_t n = radius.size();
@@ -178,19 +189,38 @@ std::array<int, 3> HierarchicalGrid::cell_coordinates(int level, const Vec3& r) 
   return c;
 }
 
+void HierarchicalGrid::set_head(int level, const std::array<int, 3>& c, std::int32_t first) {
+  Level& grid = levels_[level];
+  const int m = grid.reach;
+  // Per axis, the coordinates that stand for c[k]: itself, and on a periodic axis its image
+  // in the halo beyond the opposite face (at most one: an axis has at least 2m + 2 cells).
+  int images[3][2], count[3];
+  for (int k = 0; k < 3; ++k) {
+    const int n = grid.cells[k];
+    images[k][0] = c[k];
+    count[k] = 1;
+    if (domain_.periodic[k] && c[k] < m) images[k][count[k]++] = c[k] + n;
+    if (domain_.periodic[k] && c[k] >= n - m) images[k][count[k]++] = c[k] - n;
+  }
+  for (int a = 0; a < count[2]; ++a)
+    for (int b = 0; b < count[1]; ++b)
+      for (int d = 0; d < count[0]; ++d)
+        grid.head[flat_index(level, {images[0][d], images[1][b], images[2][a]})] = first;
+}
+
 void HierarchicalGrid::link(std::int32_t i) {
-  auto& head = levels_[level_[i]].head[flat_index(level_[i], coords_[i])];
+  const std::int32_t head = levels_[level_[i]].head[flat_index(level_[i], coords_[i])];
   prev_[i] = -1;
   next_[i] = head;
   if (head >= 0) prev_[head] = i;
-  head = i;
+  set_head(level_[i], coords_[i], i);
 }
 
 void HierarchicalGrid::unlink(std::int32_t i) {
   if (prev_[i] >= 0)
     next_[prev_[i]] = next_[i];
   else
-    levels_[level_[i]].head[flat_index(level_[i], coords_[i])] = next_[i];
+    set_head(level_[i], coords_[i], next_[i]);
   if (next_[i] >= 0) prev_[next_[i]] = prev_[i];
   next_[i] = prev_[i] = -1;
 }
@@ -217,61 +247,41 @@ Vec3 HierarchicalGrid::cross(std::int32_t i, int axis, int direction) {
   return shift;
 }
 
-
-
+bool HierarchicalGrid::block_wraps(int level, const std::array<int, 3>& c, const int (&from)[3],
+                                   const int (&to)[3]) const {
+  const auto& n = levels_[level].cells;
+  for (int k = 0; k < 3; ++k)
+    if (domain_.periodic[k] && (c[k] + from[k] < 0 || c[k] + to[k] >= n[k])) return true;
+  return false;
+}
 
 int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const {
   const int level = level_[i];
-  const auto& n = levels_[level].cells;
+  const Level& grid = levels_[level];
   const auto& c = coords_[i];
-  wrapped = false;
-  const int m = levels_[level].reach;
-  if (c[0] >= m && c[0] + m < n[0] && c[1] >= m && c[1] + m < n[1] && c[2] >= m && c[2] + m < n[2]) {
-    // Interior cell: fixed offsets, no wrapping.
-    const std::int32_t centre = flat_index(level, c);
-    const auto& offsets = levels_[level].block_offsets;
-    const int count = static_cast<int>(offsets.size());
-    for (int k = 0; k < count; ++k) cells[k] = centre + offsets[k];
-    return count;
-  }
-  // Boundary cell: per axis, the neighbours that exist (walled) or wrap (periodic).
+  const int m = grid.reach;
   const int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
-  return block_cells(level, c, from, to, cells, wrapped);
-}
-
-int HierarchicalGrid::block_cells(int level, const std::array<int, 3>& c, const int (&from)[3],
-                                  const int (&to)[3], std::int32_t* cells, bool& wrapped) const {
-  const auto& n = levels_[level].cells;
-  wrapped = false;
-  int index[3][2 * kMaxSubdivision + 1], count[3];
-  for (int k = 0; k < 3; ++k) {
-    count[k] = 0;
-    for (int d = from[k]; d <= to[k]; ++d) {
-      int idx = c[k] + d;
-      if (idx < 0 || idx >= n[k]) {
-        if (!domain_.periodic[k]) continue;
-        idx += idx < 0 ? n[k] : -n[k];
-        wrapped = true;
-      }
-      index[k][count[k]++] = idx;
-    }
-  }
-  int total = 0;
-  for (int a = 0; a < count[2]; ++a)
-    for (int b = 0; b < count[1]; ++b) {
-      const int row = n[0] * (index[1][b] + n[1] * index[2][a]);
-      for (int d = 0; d < count[0]; ++d) cells[total++] = index[0][d] + row;
-    }
-  return total;
+  wrapped = block_wraps(level, c, from, to);
+  const std::int32_t centre = flat_index(level, c);
+  const int count = static_cast<int>(grid.block_offsets.size());
+  for (int k = 0; k < count; ++k) cells[k] = centre + grid.block_offsets[k];
+  return count;
 }
 
 int HierarchicalGrid::own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells,
                                bool& wrapped) const {
   const int level = level_[i];
-  const int m = levels_[level].reach;
+  const Level& grid = levels_[level];
+  const auto& c = coords_[i];
+  const int m = grid.reach;
   int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
   from[axis] = to[axis] = direction * m;
-  return block_cells(level, coords_[i], from, to, cells, wrapped);
+  wrapped = block_wraps(level, c, from, to);
+  const std::int32_t centre = flat_index(level, c);
+  const auto& offsets = grid.slab_offsets[2 * axis + (direction > 0 ? 1 : 0)];
+  const int count = static_cast<int>(offsets.size());
+  for (int k = 0; k < count; ++k) cells[k] = centre + offsets[k];
+  return count;
 }
 
 HierarchicalGrid::AxisRange HierarchicalGrid::clip(int level, int k, int first, int last) const {

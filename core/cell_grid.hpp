@@ -25,9 +25,15 @@ class HierarchicalGrid {
     std::array<int, 3> cells{1, 1, 1};  ///< Number of cells per axis.
     Vec3 cell_size = Vec3::Ones();      ///< Cell edge per axis, m (>= the largest diameter).
     double max_radius = 0;              ///< Largest particle radius in this level, m.
-    std::vector<std::int32_t> head;     ///< First particle of each cell's list, or -1.
-    std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the block around a cell.
     int reach = 1;                      ///< Cells per diameter m: the block is (2m+1)^3 cells.
+    /// Cells per axis with a halo of m cells on each side. A halo cell of a periodic axis holds
+    /// a copy of the first particle of the cell it is an image of; on a walled axis it stays
+    /// empty. Every block is then a fixed set of flat offsets, at the box's faces too.
+    std::array<int, 3> padded{1, 1, 1};
+    std::vector<std::int32_t> head;  ///< First particle of each (padded) cell's list, or -1.
+    std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the block around a cell.
+    /// Flat offsets of the far face layer of the block, per face (2 axis + (direction > 0)).
+    std::array<std::vector<std::int32_t>, 6> slab_offsets;
   };
 
   HierarchicalGrid() = default;
@@ -119,16 +125,18 @@ class HierarchicalGrid {
   void for_each_candidate_on_other_levels(std::int32_t i, double radius_i, Visit&& visit) const {
     for_each_candidate_on_levels(i, radius_i, /*include_own=*/false, visit);
   }
-  /// The fast path for i's own level: writes the flat indices of the (at most 27) cells of the
-  /// block around i's cell into `cells` and returns how many. `wrapped` tells whether the block
+  /// The fast path for i's own level: writes the flat (padded) indices of the (2m+1)^3 cells of
+  /// the block around i's cell into `cells` and returns how many (beyond a walled face they are
+  /// empty halo cells). `wrapped` tells whether the block
   /// crosses a periodic boundary (then partners need the minimum image).
   int own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const;
   /// The cells that entered i's own-level block when it just crossed into its cell along
   /// (axis, direction): the far face layer of the block. Same conventions as own_block.
   int own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells, bool& wrapped) const;
-  /// First particle in flat cell `cell` of `level`, or -1.
+  /// First particle in flat (padded) cell `cell` of `level`, or -1.
   std::int32_t head(int level, std::int32_t cell) const { return levels_[level].head[cell]; }
-  /// The first particle of each cell of `level` (index by flat cell), -1 for an empty cell.
+  /// The first particle of each cell of `level` (index by flat padded cell, as own_block
+  /// writes them), -1 for an empty cell.
   const std::int32_t* head_array(int level) const { return levels_[level].head.data(); }
   /// The particle after j in its cell's list, or -1.
   std::int32_t next(std::int32_t j) const { return next_[j]; }
@@ -139,18 +147,23 @@ class HierarchicalGrid {
   std::array<int, 3> cell_coordinates(int level, const Vec3& r) const;
 
  private:
+  /// Flat index in the padded grid of `level` of the cell with coordinates c (each in
+  /// [-m, n + m) on its axis).
   std::int32_t flat_index(int level, const std::array<int, 3>& c) const {
-    const auto& n = levels_[level].cells;
-    return c[0] + n[0] * (c[1] + n[1] * c[2]);
+    const Level& grid = levels_[level];
+    const int m = grid.reach;
+    return (c[0] + m) + grid.padded[0] * ((c[1] + m) + grid.padded[1] * (c[2] + m));
   }
+  /// Sets the first particle of cell c of `level`, and of its periodic images in the halo.
+  void set_head(int level, const std::array<int, 3>& c, std::int32_t first);
+  /// True when the block of `level` from c + from to c + to (per axis) crosses a periodic face.
+  bool block_wraps(int level, const std::array<int, 3>& c, const int (&from)[3],
+                   const int (&to)[3]) const;
   void link(std::int32_t i);
   void unlink(std::int32_t i);
   template <class Visit>
-  void for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own, Visit&& visit) const;
-  /// Flat indices of the cells at offsets [from, to] (per axis) around cell c of `level`,
-  /// clipped on walled axes and wrapped on periodic ones (then `wrapped` is set).
-  int block_cells(int level, const std::array<int, 3>& c, const int (&from)[3], const int (&to)[3],
-                  std::int32_t* cells, bool& wrapped) const;
+  void for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own,
+                                    Visit&& visit) const;
   /// A run of consecutive cell indices along one axis, wrapped on periodic axes.
   struct AxisRange {
     int first = 0;   ///< First index (may be negative or past the end before wrapping).
@@ -195,9 +208,10 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
     for (int a = 0; a < range[2].count; ++a) {
       const int z = range[2].at(a);
       for (int b = 0; b < range[1].count; ++b) {
-        const int row = grid.cells[0] * (range[1].at(b) + grid.cells[1] * z);
+        const int y = range[1].at(b);
         for (int d = 0; d < range[0].count; ++d) {
-          for (std::int32_t j = grid.head[range[0].at(d) + row]; j >= 0; j = next_[j])
+          for (std::int32_t j = grid.head[flat_index(level, {range[0].at(d), y, z})]; j >= 0;
+               j = next_[j])
             if (j != i) visit(j);
         }
       }

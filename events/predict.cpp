@@ -111,9 +111,15 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
   const HotState* hot = hot_.data();
   const std::int32_t* head = grid_.head_array(grid_.level_of(i));
   const std::int32_t* next = grid_.next_array();
-  // The first particle of every cell, loaded before any list is walked (independent loads).
+  // The first particles of the occupied cells, in the cells' order: loaded before any list is
+  // walked (independent loads), and without a branch per cell (about half are empty).
   std::int32_t first[HierarchicalGrid::kMaxBlock];
-  for (int c = 0; c < count; ++c) first[c] = head[cells[c]];
+  int occupied = 0;
+  for (int c = 0; c < count; ++c) {
+    const std::int32_t j = head[cells[c]];
+    first[occupied] = j;
+    occupied += j >= 0;
+  }
   std::int32_t best_partner = -1;
   // Candidates are gathered into a batch, their contact times computed four at a time, and the
   // earliest picked in the order the cells were walked (as one at a time would: the first of
@@ -134,7 +140,7 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
     }
   };
   int found = 0;
-  for (int c = 0; c < count; ++c) {
+  for (int c = 0; c < occupied; ++c) {
     for (std::int32_t j = first[c]; j >= 0; j = next[j]) {
       if (j == i) continue;
       batch.state[found] = hot + j;

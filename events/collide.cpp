@@ -117,12 +117,13 @@ void Simulator::cross_cell(std::int32_t i, int face) {
 }
 
 void Simulator::book_collision(std::int32_t i, double t, std::int32_t partner_code) {
-  if (t - stall_window_start_[i] > stall_window_) {
-    stall_window_start_[i] = t;
-    stall_count_[i] = 1;
+  Agenda& agenda = agenda_[i];
+  if (t - agenda.stall_window_start > stall_window_) {
+    agenda.stall_window_start = t;
+    agenda.stall_count = 1;
     return;
   }
-  if (++stall_count_[i] <= options_.collapse.stall_collisions) return;
+  if (++agenda.stall_count <= options_.collapse.stall_collisions) return;
   const ParticleStore& p = system_.particles;
   const std::string partner = partner_code >= 0
                                   ? "particle " + std::to_string(p.id[partner_code])
@@ -130,7 +131,7 @@ void Simulator::book_collision(std::int32_t i, double t, std::int32_t partner_co
   std::ostringstream out;
   out << "inelastic collapse at t = " << t << " s: particle " << p.id[i] << " (species "
       << system_.species[p.species[i]].name << ", at " << position(i).transpose() << " m) took part in "
-      << stall_count_[i] << " collisions within " << (t - stall_window_start_[i])
+      << agenda.stall_count << " collisions within " << (t - agenda.stall_window_start)
       << " s, the last with " << partner
       << ". Hard spheres cannot rest in lasting contact, so the event rate diverges. Remedy: turn on "
          "the TC model (collapse contact_time, e.g. 1e-5 s: collisions within t_c of the previous "

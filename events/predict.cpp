@@ -61,7 +61,7 @@ void Simulator::predict(std::int32_t i, bool new_trajectory) {
     predict_relax(i, new_trajectory);
     return;
   }
-  if (new_trajectory) crossings_[i] = cell_crossing(i);
+  if (new_trajectory) agenda_[i].crossing = cell_crossing(i);
   if (has_gravity_)
     predict_with<true>(i);
   else
@@ -90,14 +90,15 @@ void Simulator::predict_with(std::int32_t i) {
       if (t < best.time) best = Event{t, j, counter[j], EventKind::Pair};
     });
   }
-  events_[i] = best;
+  agenda_[i].collision = best;
   schedule(i);
 }
 
 void Simulator::schedule(std::int32_t i) {
   // Round-off may put a root a hair before the last event: nothing happens in the past.
-  if (events_[i].time < last_particle_event_) events_[i].time = last_particle_event_;
-  if (crossings_[i].time < last_particle_event_) crossings_[i].time = last_particle_event_;
+  Agenda& a = agenda_[i];
+  if (a.collision.time < last_particle_event_) a.collision.time = last_particle_event_;
+  if (a.crossing.time < last_particle_event_) a.crossing.time = last_particle_event_;
   calendar_.set(static_cast<std::size_t>(i), next_event(i).time);
 }
 
@@ -156,14 +157,14 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
 
 template <bool kGravity>
 void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) {
-  crossings_[i] = cell_crossing(i);
+  agenda_[i].crossing = cell_crossing(i);
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;
   const int count = grid_.own_slab(i, axis, direction, cells, wrapped);
-  double best_pair_time = events_[i].time;
+  double best_pair_time = agenda_[i].collision.time;
   const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
-    events_[i] = Event{best_pair_time, best_partner, system_.particles.event_counter[best_partner],
+    agenda_[i].collision = Event{best_pair_time, best_partner, system_.particles.event_counter[best_partner],
                        EventKind::Pair};
   schedule(i);
 }

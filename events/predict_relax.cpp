@@ -102,17 +102,17 @@ Event Simulator::relax_cell_crossing(std::int32_t i) const {
 void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
   if (horizon_ == kNever) {
     // No fluid step registered yet: nothing can be predicted (registering one predicts all).
-    events_[i] = crossings_[i] = Event{};
+    agenda_[i].collision = agenda_[i].crossing = Event{};
     schedule(i);
     return;
   }
-  if (new_trajectory) crossings_[i] = relax_cell_crossing(i);
+  if (new_trajectory) agenda_[i].crossing = relax_cell_crossing(i);
   const auto& counter = system_.particles.event_counter;
   // Only events before the next crossing matter: a crossing predicts everything again (see
   // cross_cell). Searching each candidate only up to the best time so far lets most of them
   // stop at the first bound.
   Event best;
-  double limit = crossings_[i].time;
+  double limit = agenda_[i].crossing.time;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
     const double t = relax_wall_time(i, system_.walls[w], limit);
     if (t < best.time) {
@@ -137,7 +137,7 @@ void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
     for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) consider(j);
   if (grid_.levels().size() > 1)
     grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, consider);
-  events_[i] = best;
+  agenda_[i].collision = best;
   schedule(i);
 }
 

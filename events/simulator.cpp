@@ -66,12 +66,9 @@ Simulator::Simulator(System system, SimulatorOptions options)
   relax_ = options_.flight_model == FlightModel::Relax;
   flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   hold_fixed_particles();
-  events_.assign(n, Event{});
-  crossings_.assign(n, Event{});
+  agenda_.assign(n, Agenda{});
   end_slot_ = n;
   calendar_.resize(n + 1);
-  stall_window_start_.assign(n, -kNever);
-  stall_count_.assign(n, 0);
 
   stall_window_ = options_.collapse.stall_window;
   if (stall_window_ <= 0.0 && n > 0) {
@@ -111,17 +108,17 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   flights_ = std::move(state.flights);
   if (flights_.empty()) flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   if (flights_.size() != n) throw std::invalid_argument("saved state: flights missing");
-  events_ = std::move(state.events);
-  crossings_ = std::move(state.crossings);
-  if (crossings_.size() != n) throw std::invalid_argument("saved state: crossings missing");
+  if (state.crossings.size() != n) throw std::invalid_argument("saved state: crossings missing");
+  agenda_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    agenda_[i] = Agenda{state.events[i], state.crossings[i], state.stall_window_start[i],
+                        state.stall_count[i]};
   end_slot_ = n;
   calendar_.resize(n + 1);
   for (std::size_t i = 0; i < n; ++i) calendar_.set(i, next_event(i).time);
   time_ = state.time;
   last_particle_event_ = state.last_particle_event;
   statistics_ = std::move(state.statistics);
-  stall_window_start_ = std::move(state.stall_window_start);
-  stall_count_ = std::move(state.stall_count);
   stall_window_ = state.stall_window;
   restored_action_times_ = std::move(state.action_times);
   restored_ = true;
@@ -139,14 +136,16 @@ EngineState Simulator::state() const {
     s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
     s.places[i] = grid_.place_in_cell(static_cast<std::int32_t>(i));
   }
-  s.events = events_;
-  s.crossings = crossings_;
+  for (const Agenda& a : agenda_) {
+    s.events.push_back(a.collision);
+    s.crossings.push_back(a.crossing);
+    s.stall_window_start.push_back(a.stall_window_start);
+    s.stall_count.push_back(a.stall_count);
+  }
   s.flights = flights_;
   s.time = time_;
   s.last_particle_event = last_particle_event_;
   s.statistics = statistics_;
-  s.stall_window_start = stall_window_start_;
-  s.stall_count = stall_count_;
   s.stall_window = stall_window_;
   for (const PeriodicAction& a : actions_) s.action_times.emplace_back(a.name, a.next_time);
   return s;
@@ -177,7 +176,7 @@ void Simulator::add_synchronising_action(std::string name, double first_time, do
     // Predictions made so far may reach past the new horizon: make them again. (A restored
     // run's events were made with the saved horizon and stand as they are.)
     horizon_ = horizon;
-    for (std::size_t i = 0; i < events_.size(); ++i) predict(static_cast<std::int32_t>(i));
+    for (std::size_t i = 0; i < agenda_.size(); ++i) predict(static_cast<std::int32_t>(i));
   }
   horizon_ = horizon;
 }
@@ -229,7 +228,7 @@ bool Simulator::run_until(double t_end) {
   if (!(t_end >= time_))
     throw std::invalid_argument("run_until: the end time " + std::to_string(t_end) +
                                 " s is before the current time " + std::to_string(time_) + " s");
-  if (relax_ && horizon_ == kNever && !events_.empty())
+  if (relax_ && horizon_ == kNever && !agenda_.empty())
     throw std::logic_error("relax flights need a synchronising action (the fluid step)");
   calendar_.set(end_slot_, t_end);
   for (std::uint32_t countdown = 4096;; --countdown) {
@@ -300,7 +299,7 @@ void Simulator::process_particle_event(std::int32_t i) {
   // book_collision, counts one particle's collisions in a short window).
   if (event.time > last_particle_event_) {
     events_without_progress_ = 0;
-  } else if (++events_without_progress_ > 1000000 + 100 * events_.size()) {
+  } else if (++events_without_progress_ > 1000000 + 100 * agenda_.size()) {
     const ParticleStore& p = system_.particles;
     std::ostringstream out;
     out << "the run is stalled at t = " << event.time << " s: " << events_without_progress_

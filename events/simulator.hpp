@@ -152,11 +152,12 @@ class Simulator {
   /// The event particle i is waiting for (its calendar entry): the earlier of its next
   /// collision and its next cell crossing.
   Event next_event(std::size_t i) const {
-    return crossings_[i].time <= events_[i].time ? crossings_[i] : events_[i];
+    const Agenda& a = agenda_[i];
+    return a.crossing.time <= a.collision.time ? a.crossing : a.collision;
   }
   /// next_event(i) for every particle.
   std::vector<Event> predicted_events() const {
-    std::vector<Event> all(events_.size());
+    std::vector<Event> all(agenda_.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = next_event(i);
     return all;
   }
@@ -221,8 +222,15 @@ class Simulator {
   std::vector<HotState> hot_;
   HierarchicalGrid grid_;
   Calendar calendar_;
-  std::vector<Event> events_;            ///< Particle i's earliest pair or wall collision.
-  std::vector<Event> crossings_;         ///< Particle i's next cell crossing.
+  /// What one particle waits for, and its stall bookkeeping: read and written at each of its
+  /// events, so kept in one cache line rather than four arrays (a cache miss each).
+  struct alignas(64) Agenda {
+    Event collision;                     ///< Earliest pair or wall collision.
+    Event crossing;                      ///< Next cell crossing.
+    double stall_window_start = -kNever; ///< Start of the stall window, s.
+    std::uint32_t stall_count = 0;       ///< Collisions in that window.
+  };
+  std::vector<Agenda> agenda_;           ///< Per particle.
   std::vector<PeriodicAction> actions_;  ///< Slot N + 1 + k: action k.
   std::size_t end_slot_ = 0;             ///< Slot N: the end of the current run_until.
   double time_ = 0;                      ///< Time of the last processed event, s.
@@ -233,8 +241,6 @@ class Simulator {
   std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.
   double horizon_ = kNever;                    ///< Relax: no prediction reaches past this, s.
   bool restored_ = false;                      ///< Built from an EngineState (its events stand).
-  std::vector<double> stall_window_start_;     ///< Per particle: start of its stall window, s.
-  std::vector<std::uint32_t> stall_count_;     ///< Per particle: collisions in that window.
   double stall_window_ = 0;                    ///< s.
   std::vector<std::pair<std::string, double>> restored_action_times_;
   std::uint64_t events_without_progress_ = 0;  ///< Consecutive events at one time.

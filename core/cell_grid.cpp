@@ -166,15 +166,14 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
   const std::size_t n = radius.size();
   next_.assign(n, -1);
   prev_.assign(n, -1);
-  level_.assign(n, 0);
-  coords_.assign(n, {0, 0, 0});
+  place_.assign(n, Place{});
   for (std::size_t i = 0; i < n; ++i) {
     // The finest level whose nominal diameter still holds this particle.
     const double d = 2.0 * radius[i];
     int level = 0;
     for (int l = 0; l < static_cast<int>(level_diameter_.size()); ++l)
       if (level_diameter_[l] >= d) level = l;
-    level_[i] = static_cast<std::uint8_t>(level);
+    place_[i].level = static_cast<std::uint8_t>(level);
     levels_[level].max_radius = std::max(levels_[level].max_radius, radius[i]);
   }
 }
@@ -209,32 +208,33 @@ void HierarchicalGrid::set_head(int level, const std::array<int, 3>& c, std::int
 }
 
 void HierarchicalGrid::link(std::int32_t i) {
-  const std::int32_t head = levels_[level_[i]].head[flat_index(level_[i], coords_[i])];
+  const std::int32_t head =
+      levels_[place_[i].level].head[flat_index(place_[i].level, place_[i].cell)];
   prev_[i] = -1;
   next_[i] = head;
   if (head >= 0) prev_[head] = i;
-  set_head(level_[i], coords_[i], i);
+  set_head(place_[i].level, place_[i].cell, i);
 }
 
 void HierarchicalGrid::unlink(std::int32_t i) {
   if (prev_[i] >= 0)
     next_[prev_[i]] = next_[i];
   else
-    set_head(level_[i], coords_[i], next_[i]);
+    set_head(place_[i].level, place_[i].cell, next_[i]);
   if (next_[i] >= 0) prev_[next_[i]] = prev_[i];
   next_[i] = prev_[i] = -1;
 }
 
 void HierarchicalGrid::insert(std::int32_t i, const Vec3& r) {
-  coords_[i] = cell_coordinates(level_[i], r);
+  place_[i].cell = cell_coordinates(place_[i].level, r);
   link(i);
 }
 
 Vec3 HierarchicalGrid::cross(std::int32_t i, int axis, int direction) {
   unlink(i);
-  const Level& grid = levels_[level_[i]];
+  const Level& grid = levels_[place_[i].level];
   Vec3 shift = Vec3::Zero();
-  int idx = coords_[i][axis] + direction;
+  int idx = place_[i].cell[axis] + direction;
   if (idx < 0) {
     idx += grid.cells[axis];
     shift[axis] = domain_.length()[axis];
@@ -242,7 +242,7 @@ Vec3 HierarchicalGrid::cross(std::int32_t i, int axis, int direction) {
     idx -= grid.cells[axis];
     shift[axis] = -domain_.length()[axis];
   }
-  coords_[i][axis] = idx;
+  place_[i].cell[axis] = idx;
   link(i);
   return shift;
 }
@@ -256,9 +256,9 @@ bool HierarchicalGrid::block_wraps(int level, const std::array<int, 3>& c, const
 }
 
 int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const {
-  const int level = level_[i];
+  const int level = place_[i].level;
   const Level& grid = levels_[level];
-  const auto& c = coords_[i];
+  const auto& c = place_[i].cell;
   const int m = grid.reach;
   const int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
   wrapped = block_wraps(level, c, from, to);
@@ -270,9 +270,9 @@ int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapp
 
 int HierarchicalGrid::own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells,
                                bool& wrapped) const {
-  const int level = level_[i];
+  const int level = place_[i].level;
   const Level& grid = levels_[level];
-  const auto& c = coords_[i];
+  const auto& c = place_[i].cell;
   const int m = grid.reach;
   int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
   from[axis] = to[axis] = direction * m;

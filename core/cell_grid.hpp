@@ -66,7 +66,7 @@ class HierarchicalGrid {
   void insert(std::int32_t i, const Vec3& r);
   /// Places particle i in the given cell of its level (restoring a saved state).
   void insert_at(std::int32_t i, const std::array<int, 3>& cell) {
-    coords_[i] = cell;
+    place_[i].cell = cell;
     link(i);
   }
   /// Takes particle i out of the grid (it can be inserted again).
@@ -76,9 +76,9 @@ class HierarchicalGrid {
   Vec3 cross(std::int32_t i, int axis, int direction);
 
   /// Level of particle i.
-  int level_of(std::int32_t i) const { return level_[i]; }
+  int level_of(std::int32_t i) const { return place_[i].level; }
   /// Cell coordinates of particle i on its level.
-  const std::array<int, 3>& cell_of(std::int32_t i) const { return coords_[i]; }
+  const std::array<int, 3>& cell_of(std::int32_t i) const { return place_[i].cell; }
   /// How many particles come before i in its cell's list (0: the first). Scans visit a cell's
   /// particles in this order, and a relax prediction's round-off depends on it, so a restored
   /// grid must keep it (insert_at the particles in order of decreasing place).
@@ -89,15 +89,15 @@ class HierarchicalGrid {
   }
   /// Lower corner of particle i's cell, m.
   Vec3 cell_lower(std::int32_t i) const {
-    const Level& grid = levels_[level_[i]];
-    const auto& c = coords_[i];
+    const Level& grid = levels_[place_[i].level];
+    const auto& c = place_[i].cell;
     return {domain_.lower.x() + c[0] * grid.cell_size.x(), domain_.lower.y() + c[1] * grid.cell_size.y(),
             domain_.lower.z() + c[2] * grid.cell_size.z()};
   }
   /// Upper corner of particle i's cell, m (the box's upper face exactly for the last cell).
   Vec3 cell_upper(std::int32_t i) const {
-    const Level& grid = levels_[level_[i]];
-    const auto& c = coords_[i];
+    const Level& grid = levels_[place_[i].level];
+    const auto& c = place_[i].cell;
     Vec3 upper;
     for (int k = 0; k < 3; ++k)
       upper[k] = c[k] + 1 == grid.cells[k] ? domain_.upper[k]
@@ -108,8 +108,8 @@ class HierarchicalGrid {
   /// (non-periodic) axis, so that no crossing through it is ever expected.
   bool is_outer_face(std::int32_t i, int axis, int direction) const {
     if (domain_.periodic[axis]) return false;
-    const int idx = coords_[i][axis];
-    return direction < 0 ? idx == 0 : idx + 1 == levels_[level_[i]].cells[axis];
+    const int idx = place_[i].cell[axis];
+    return direction < 0 ? idx == 0 : idx + 1 == levels_[place_[i].level].cells[axis];
   }
 
   const std::vector<Level>& levels() const { return levels_; }
@@ -184,14 +184,19 @@ class HierarchicalGrid {
   std::vector<Level> levels_;
   std::vector<double> level_diameter_;  ///< Nominal (largest) diameter of each level, m.
   std::vector<std::int32_t> next_, prev_;
-  std::vector<std::uint8_t> level_;
-  std::vector<std::array<int, 3>> coords_;
+  /// Where a particle is: its level and its cell there. Read together at every prediction,
+  /// so kept together (one cache miss, not two).
+  struct Place {
+    std::array<int, 3> cell{0, 0, 0};  ///< Cell coordinates on the level.
+    std::uint8_t level = 0;
+  };
+  std::vector<Place> place_;  ///< Per particle.
 };
 
 template <class Visit>
 void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own,
                                                     Visit&& visit) const {
-  const int own = level_[i];
+  const int own = place_[i].level;
   for (int level = 0; level < static_cast<int>(levels_.size()); ++level) {
     if (level == own && !include_own) continue;
     const Level& grid = levels_[level];
@@ -199,7 +204,7 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
     if (level == own) {
       // The 3x3x3 block: the cell is wider than any contact distance within the level.
       for (int k = 0; k < 3; ++k)
-        range[k] = clip(level, k, coords_[i][k] - grid.reach, coords_[i][k] + grid.reach);
+        range[k] = clip(level, k, place_[i].cell[k] - grid.reach, place_[i].cell[k] + grid.reach);
     } else {
       const Vec3 lower = cell_lower(i), upper = cell_upper(i);
       const double reach = radius_i + grid.max_radius;

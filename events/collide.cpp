@@ -130,13 +130,13 @@ void Simulator::book_collision(std::int32_t i, double t, std::int32_t partner_co
                                   : "wall '" + system_.walls[-1 - partner_code].name + "'";
   std::ostringstream out;
   out << "inelastic collapse at t = " << t << " s: particle " << p.id[i] << " (species "
-      << system_.species[p.species[i]].name << ", at " << position(i).transpose() << " m) took part in "
-      << agenda.stall_count << " collisions within " << (t - agenda.stall_window_start)
-      << " s, the last with " << partner
-      << ". Hard spheres cannot rest in lasting contact, so the event rate diverges. Remedy: turn on "
-         "the TC model (collapse contact_time, e.g. 1e-5 s: collisions within t_c of the previous "
-         "one are elastic), or make slow impacts elastic (collapse elastic_below_speed), or raise "
-         "the restitution coefficient.";
+      << system_.species[p.species[i]].name << ", at " << position(i).transpose()
+      << " m) took part in " << agenda.stall_count << " collisions within "
+      << (t - agenda.stall_window_start) << " s, the last with " << partner
+      << ". Hard spheres cannot rest in lasting contact, so the event rate diverges. Remedy: "
+         "turn on the TC model (collapse contact_time, e.g. 1e-5 s: collisions within t_c of "
+         "the previous one are elastic), or make slow impacts elastic (collapse "
+         "elastic_below_speed), or raise the restitution coefficient.";
   std::vector<std::uint64_t> ids{p.id[i]};
   if (partner_code >= 0) ids.push_back(p.id[partner_code]);
   throw InelasticCollapse(out.str(), ids);

@@ -164,8 +164,8 @@ void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) 
   double best_pair_time = agenda_[i].collision.time;
   const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
-    agenda_[i].collision = Event{best_pair_time, best_partner, system_.particles.event_counter[best_partner],
-                       EventKind::Pair};
+    agenda_[i].collision = Event{best_pair_time, best_partner,
+                                 system_.particles.event_counter[best_partner], EventKind::Pair};
   schedule(i);
 }
 

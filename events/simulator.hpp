@@ -225,10 +225,10 @@ class Simulator {
   /// What one particle waits for, and its stall bookkeeping: read and written at each of its
   /// events, so kept in one cache line rather than four arrays (a cache miss each).
   struct alignas(64) Agenda {
-    Event collision;                     ///< Earliest pair or wall collision.
-    Event crossing;                      ///< Next cell crossing.
-    double stall_window_start = -kNever; ///< Start of the stall window, s.
-    std::uint32_t stall_count = 0;       ///< Collisions in that window.
+    Event collision;                      ///< Earliest pair or wall collision.
+    Event crossing;                       ///< Next cell crossing.
+    double stall_window_start = -kNever;  ///< Start of the stall window, s.
+    std::uint32_t stall_count = 0;        ///< Collisions in that window.
   };
   std::vector<Agenda> agenda_;           ///< Per particle.
   std::vector<PeriodicAction> actions_;  ///< Slot N + 1 + k: action k.

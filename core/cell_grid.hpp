@@ -127,8 +127,8 @@ class HierarchicalGrid {
   }
   /// The fast path for i's own level: writes the flat (padded) indices of the (2m+1)^3 cells of
   /// the block around i's cell into `cells` and returns how many (beyond a walled face they are
-  /// empty halo cells). `wrapped` tells whether the block
-  /// crosses a periodic boundary (then partners need the minimum image).
+  /// empty halo cells). `wrapped` tells whether the block crosses a periodic boundary (then
+  /// partners need the minimum image).
   int own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const;
   /// The cells that entered i's own-level block when it just crossed into its cell along
   /// (axis, direction): the far face layer of the block. Same conventions as own_block.

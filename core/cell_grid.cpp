@@ -255,33 +255,32 @@ bool HierarchicalGrid::block_wraps(int level, const std::array<int, 3>& c, const
   return false;
 }
 
+int HierarchicalGrid::cells_around(std::int32_t i, const std::vector<std::int32_t>& offsets,
+                                   const int (&from)[3], const int (&to)[3], std::int32_t* cells,
+                                   bool& wrapped) const {
+  const Place& at = place_[i];
+  wrapped = block_wraps(at.level, at.cell, from, to);
+  const std::int32_t centre = flat_index(at.level, at.cell);
+  const int count = static_cast<int>(offsets.size());
+  for (int k = 0; k < count; ++k) cells[k] = centre + offsets[k];
+  return count;
+}
+
 int HierarchicalGrid::own_block(std::int32_t i, std::int32_t* cells, bool& wrapped) const {
-  const int level = place_[i].level;
-  const Level& grid = levels_[level];
-  const auto& c = place_[i].cell;
+  const Level& grid = levels_[place_[i].level];
   const int m = grid.reach;
   const int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
-  wrapped = block_wraps(level, c, from, to);
-  const std::int32_t centre = flat_index(level, c);
-  const int count = static_cast<int>(grid.block_offsets.size());
-  for (int k = 0; k < count; ++k) cells[k] = centre + grid.block_offsets[k];
-  return count;
+  return cells_around(i, grid.block_offsets, from, to, cells, wrapped);
 }
 
 int HierarchicalGrid::own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells,
                                bool& wrapped) const {
-  const int level = place_[i].level;
-  const Level& grid = levels_[level];
-  const auto& c = place_[i].cell;
+  const Level& grid = levels_[place_[i].level];
   const int m = grid.reach;
   int from[3] = {-m, -m, -m}, to[3] = {m, m, m};
   from[axis] = to[axis] = direction * m;
-  wrapped = block_wraps(level, c, from, to);
-  const std::int32_t centre = flat_index(level, c);
-  const auto& offsets = grid.slab_offsets[2 * axis + (direction > 0 ? 1 : 0)];
-  const int count = static_cast<int>(offsets.size());
-  for (int k = 0; k < count; ++k) cells[k] = centre + offsets[k];
-  return count;
+  return cells_around(i, grid.slab_offsets[2 * axis + (direction > 0 ? 1 : 0)], from, to, cells,
+                      wrapped);
 }
 
 HierarchicalGrid::AxisRange HierarchicalGrid::clip(int level, int k, int first, int last) const {

@@ -159,6 +159,10 @@ class HierarchicalGrid {
   /// True when the block of `level` from c + from to c + to (per axis) crosses a periodic face.
   bool block_wraps(int level, const std::array<int, 3>& c, const int (&from)[3],
                    const int (&to)[3]) const;
+  /// The cells at `offsets` from particle i's cell on its level, into `cells` (returns how
+  /// many); `wrapped` as block_wraps over the per-axis span [from, to] those offsets cover.
+  int cells_around(std::int32_t i, const std::vector<std::int32_t>& offsets, const int (&from)[3],
+                   const int (&to)[3], std::int32_t* cells, bool& wrapped) const;
   void link(std::int32_t i);
   void unlink(std::int32_t i);
   template <class Visit>

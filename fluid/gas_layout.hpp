@@ -79,6 +79,14 @@ struct GasLayout {
   int minus_face(int axis, int cell) const { return cell_faces[axis][cell][0]; }
   /// Face of `axis` on the high side of a cell.
   int plus_face(int axis, int cell) const { return cell_faces[axis][cell][1]; }
+  /// The side (2 axis + (high side)) an open face of `axis` lies on, or -1 for a face between
+  /// two cells (periodic wraps included) or a closed one.
+  int boundary_side(int axis, int face) const {
+    if (area[axis][face] == 0.0) return -1;
+    if (left[axis][face] < 0) return 2 * axis;
+    if (right[axis][face] < 0) return 2 * axis + 1;
+    return -1;
+  }
   /// Coordinates of a face of `axis` in its face array.
   std::array<int, 3> face_coordinates(int axis, int face) const {
     const auto& d = face_dims[axis];

@@ -156,9 +156,8 @@ void GasSolver::set_fixed_faces(const StepInputs& in) {
     for (int f = 0; f < layout.face_count[a]; ++f) {
       if (layout.unknown[a][f] >= 0) continue;
       velocity_[a][f] = 0.0;
-      const int left = layout.left[a][f], right = layout.right[a][f];
-      if (layout.area[a][f] == 0.0 || (left >= 0 && right >= 0)) continue;
-      const int side = left < 0 ? 2 * a : 2 * a + 1;
+      const int side = layout.boundary_side(a, f);
+      if (side < 0) continue;
       const GasBoundary& b = boundaries_[side];
       if (b.kind != GasBoundaryKind::Inlet) continue;
       // Superficial velocity into the domain, uniform or from the jet profile.
@@ -168,7 +167,7 @@ void GasSolver::set_fixed_faces(const StepInputs& in) {
         const int first = a == 0 ? 1 : 0, second = a == 2 ? 1 : 2;
         superficial = b.jet_profile[ijk[first] + layout.cells[first] * ijk[second]];
       }
-      const int cell = left >= 0 ? left : right;
+      const int cell = side % 2 ? layout.left[a][f] : layout.right[a][f];
       velocity_[a][f] = (side % 2 ? -superficial : superficial) / in.porosity[cell];
     }
   }
@@ -325,10 +324,8 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
 }
 
 bool GasSolver::is_inlet_face(int axis, int face) const {
-  const GasLayout& layout = *layout_;
-  const int left = layout.left[axis][face], right = layout.right[axis][face];
-  if ((left < 0) == (right < 0) || layout.area[axis][face] == 0.0) return false;
-  return boundaries_[left < 0 ? 2 * axis : 2 * axis + 1].kind == GasBoundaryKind::Inlet;
+  const int side = layout_->boundary_side(axis, face);
+  return side >= 0 && boundaries_[side].kind == GasBoundaryKind::Inlet;
 }
 
 void GasSolver::set_inlet_drops(const StepInputs& in) {

@@ -98,9 +98,7 @@ double GasSolver::momentum_inflow(int side) const {
   const bool high = side % 2 == 1;
   double sum = 0.0;
   for (int f = 0; f < layout.face_count[a]; ++f) {
-    const int left = layout.left[a][f], right = layout.right[a][f];
-    const bool on_side = high ? (left >= 0 && right < 0) : (left < 0 && right >= 0);
-    if (!on_side || layout.area[a][f] == 0.0) continue;
+    if (layout.boundary_side(a, f) != side) continue;
     const double eps = has_old_porosity_ ? face_porosity(a, f, old_porosity_) : 1.0;
     const double u = velocity_[a][f];
     sum += eps * layout.area[a][f] * u * u;

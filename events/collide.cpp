@@ -11,9 +11,9 @@ namespace carom {
 ContactLaw Simulator::effective_law(const ContactLaw& law, double normal_speed, double t,
                                     std::int32_t i, std::int32_t j) const {
   const CollapseOptions& collapse = options_.collapse;
-  const auto& last = system_.particles.last_collision;
   if (collapse.contact_time > 0.0 &&
-      (t - last[i] < collapse.contact_time || (j >= 0 && t - last[j] < collapse.contact_time))) {
+      (t - body_[i].last_collision < collapse.contact_time ||
+       (j >= 0 && t - body_[j].last_collision < collapse.contact_time))) {
     ContactLaw elastic_smooth;  // e = 1, mu = 0: no energy lost, no tangential impulse
     return elastic_smooth;
   }
@@ -27,25 +27,31 @@ ContactLaw Simulator::effective_law(const ContactLaw& law, double normal_speed, 
 
 void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
   last_particle_event_ = time_ = t;
-  ParticleStore& p = system_.particles;
   advance(i, t);
   advance(j, t);
-  Vec3 dr = p.position[i] - p.position[j];
+  HotState& mi = hot_[i];
+  HotState& mj = hot_[j];
+  Body& bi = body_[i];
+  Body& bj = body_[j];
+  Vec3 dr = mi.position - mj.position;
   system_.domain.minimum_image(dr);
   const double distance = dr.norm();
   const Vec3 n = dr / distance;
-  const Vec3 momentum_before = p.mass[i] * p.velocity[i] + p.mass[j] * p.velocity[j];
-  const std::uint32_t si = p.species[i], sj = p.species[j];
-  const ContactLaw law = effective_law(system_.materials.pair(si, sj),
-                                       (p.velocity[i] - p.velocity[j]).dot(n), t, i, j);
-  const bool fixed_i = system_.species[si].fixed, fixed_j = system_.species[sj].fixed;
-  const CollisionOutcome outcome = collide(
-      law, n,
-      ContactBody{p.velocity[i], p.spin[i], fixed_i ? 0.0 : 1.0 / p.mass[i], p.radius[i],
-                  fixed_i ? 0.0 : 1.0 / p.inertia[i]},
-      ContactBody{p.velocity[j], p.spin[j], fixed_j ? 0.0 : 1.0 / p.mass[j], p.radius[j],
-                  fixed_j ? 0.0 : 1.0 / p.inertia[j]});
-  if (options_.check_invariants && !fixed_i && !fixed_j) check_pair_invariants(i, j, momentum_before);
+  const ParticleStore& p = system_.particles;
+  const Vec3 momentum_before = options_.check_invariants
+                                   ? Vec3(p.mass[i] * mi.velocity + p.mass[j] * mj.velocity)
+                                   : Vec3::Zero();
+  const std::uint32_t si = bi.species, sj = bj.species;
+  const ContactLaw law =
+      effective_law(system_.materials.pair(si, sj), (mi.velocity - mj.velocity).dot(n), t, i, j);
+  const CollisionOutcome outcome =
+      collide(law, n,
+              ContactBody{mi.velocity, bi.spin, bi.fixed ? 0.0 : bi.inverse_mass, mi.radius,
+                          bi.fixed ? 0.0 : bi.inverse_inertia},
+              ContactBody{mj.velocity, bj.spin, bj.fixed ? 0.0 : bj.inverse_mass, mj.radius,
+                          bj.fixed ? 0.0 : bj.inverse_inertia});
+  if (options_.check_invariants && !bi.fixed && !bj.fixed)
+    check_pair_invariants(i, j, momentum_before);
 
   const std::size_t species = statistics_.species_count;
   ++statistics_.pair_collisions[si * species + sj];
@@ -56,44 +62,42 @@ void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
   ++statistics_.pair_events;
   statistics_.virial += dr * outcome.impulse.transpose();
   statistics_.dissipated_energy += outcome.dissipated;
-  ++p.event_counter[i];
-  ++p.event_counter[j];
-  refresh_hot(i);
-  refresh_hot(j);
+  ++bi.event_counter;
+  ++bj.event_counter;
   predict(i);
   predict(j);
   book_collision(i, t, j);
   book_collision(j, t, i);
-  p.last_collision[i] = p.last_collision[j] = t;
+  bi.last_collision = bj.last_collision = t;
 }
 
 void Simulator::collide_wall(std::int32_t i, std::int32_t w, double t) {
   last_particle_event_ = time_ = t;
-  ParticleStore& p = system_.particles;
   advance(i, t);
+  HotState& m = hot_[i];
+  Body& b = body_[i];
   const Wall& wall = system_.walls[w];
-  const Vec3 n = wall.contact_normal(p.position[i]);
-  if (options_.check_invariants && wall.gap(p.position[i], p.radius[i]) < -1e-10 * p.radius[i]) {
+  const Vec3 n = wall.contact_normal(m.position);
+  if (options_.check_invariants && wall.gap(m.position, m.radius) < -1e-10 * m.radius) {
     std::ostringstream out;
-    out << "invariant broken: particle " << p.id[i] << " overlaps wall '" << wall.name << "' by "
-        << -wall.gap(p.position[i], p.radius[i]) << " m at t = " << t << " s";
+    out << "invariant broken: particle " << system_.particles.id[i] << " overlaps wall '"
+        << wall.name << "' by " << -wall.gap(m.position, m.radius) << " m at t = " << t << " s";
     throw std::logic_error(out.str());
   }
-  const std::uint32_t si = p.species[i];
-  const ContactLaw law = effective_law(system_.materials.wall(si, w), p.velocity[i].dot(n), t, i, -1);
+  const std::uint32_t si = b.species;
+  const ContactLaw law = effective_law(system_.materials.wall(si, w), m.velocity.dot(n), t, i, -1);
   Vec3 wall_velocity = Vec3::Zero(), wall_spin = Vec3::Zero();
   const CollisionOutcome outcome =
-      collide(law, n, ContactBody{p.velocity[i], p.spin[i], 1.0 / p.mass[i], p.radius[i], 1.0 / p.inertia[i]},
+      collide(law, n, ContactBody{m.velocity, b.spin, b.inverse_mass, m.radius, b.inverse_inertia},
               ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
   ++statistics_.wall_collisions[si * statistics_.wall_count + w];
   ++statistics_.wall_events;
   statistics_.wall_impulse[w] -= outcome.impulse;
   statistics_.dissipated_energy += outcome.dissipated;
-  ++p.event_counter[i];
-  refresh_hot(i);
+  ++b.event_counter;
   predict(i);
   book_collision(i, t, -1 - w);
-  p.last_collision[i] = t;
+  b.last_collision = t;
 }
 
 void Simulator::cross_cell(std::int32_t i, int face) {
@@ -102,9 +106,7 @@ void Simulator::cross_cell(std::int32_t i, int face) {
   // (a particle that fell back through a face is not mistaken for one still rising), and
   // stored states never lag more than one cell behind (so one periodic image shift suffices).
   advance(i, time_);
-  const Vec3 shift = grid_.cross(i, axis, direction);
-  system_.particles.position[i] += shift;  // a periodic wrap moves the stored state by one box
-  refresh_hot(i);
+  hot_[i].position += grid_.cross(i, axis, direction);  // a periodic wrap: one box length
   ++statistics_.cell_crossings;
   // Same trajectory: partners' predictions with i stay valid (no counter bump), and so does
   // i's own next collision; only the cells that just came into reach need a look.
@@ -144,12 +146,14 @@ void Simulator::book_collision(std::int32_t i, double t, std::int32_t partner_co
 
 void Simulator::check_pair_invariants(std::int32_t i, std::int32_t j, const Vec3& momentum_before) const {
   const ParticleStore& p = system_.particles;
-  Vec3 dr = p.position[i] - p.position[j];
+  const HotState& mi = hot_[i];
+  const HotState& mj = hot_[j];
+  Vec3 dr = mi.position - mj.position;
   system_.domain.minimum_image(dr);
-  const double contact = p.radius[i] + p.radius[j];
-  const Vec3 momentum_after = p.mass[i] * p.velocity[i] + p.mass[j] * p.velocity[j];
-  const double scale = p.mass[i] * p.velocity[i].norm() + p.mass[j] * p.velocity[j].norm() +
-                       momentum_before.norm();
+  const double contact = mi.radius + mj.radius;
+  const Vec3 momentum_after = p.mass[i] * mi.velocity + p.mass[j] * mj.velocity;
+  const double scale =
+      p.mass[i] * mi.velocity.norm() + p.mass[j] * mj.velocity.norm() + momentum_before.norm();
   std::ostringstream out;
   if (dr.norm() < contact * (1.0 - 1e-10))
     out << "particles " << p.id[i] << " and " << p.id[j] << " overlap by " << contact - dr.norm() << " m";

@@ -70,7 +70,6 @@ void Simulator::predict(std::int32_t i, bool new_trajectory) {
 
 template <bool kGravity>
 void Simulator::predict_with(std::int32_t i) {
-  const auto& counter = system_.particles.event_counter;
   Event best;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
     const double t = wall_time(i, system_.walls[w]);
@@ -82,12 +81,13 @@ void Simulator::predict_with(std::int32_t i) {
   const int count = grid_.own_block(i, cells, wrapped);
   double best_pair_time = best.time;
   const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
-  if (best_partner >= 0) best = Event{best_pair_time, best_partner, counter[best_partner], EventKind::Pair};
+  if (best_partner >= 0)
+    best = Event{best_pair_time, best_partner, body_[best_partner].event_counter, EventKind::Pair};
   // Other levels (polydisperse systems).
   if (grid_.levels().size() > 1) {
     grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, [&](std::int32_t j) {
       const double t = pair_time<kGravity>(i, j);
-      if (t < best.time) best = Event{t, j, counter[j], EventKind::Pair};
+      if (t < best.time) best = Event{t, j, body_[j].event_counter, EventKind::Pair};
     });
   }
   agenda_[i].collision = best;
@@ -164,8 +164,8 @@ void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) 
   double best_pair_time = agenda_[i].collision.time;
   const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
-    agenda_[i].collision = Event{best_pair_time, best_partner,
-                                 system_.particles.event_counter[best_partner], EventKind::Pair};
+    agenda_[i].collision =
+        Event{best_pair_time, best_partner, body_[best_partner].event_counter, EventKind::Pair};
   schedule(i);
 }
 

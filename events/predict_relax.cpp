@@ -107,7 +107,6 @@ void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
     return;
   }
   if (new_trajectory) agenda_[i].crossing = relax_cell_crossing(i);
-  const auto& counter = system_.particles.event_counter;
   // Only events before the next crossing matter: a crossing predicts everything again (see
   // cross_cell). Searching each candidate only up to the best time so far lets most of them
   // stop at the first bound.
@@ -124,7 +123,7 @@ void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
     if (j == i) return;
     const double t = relax_pair_time(i, j, limit);
     if (t < best.time) {
-      best = Event{t, j, counter[j], EventKind::Pair};
+      best = Event{t, j, body_[j].event_counter, EventKind::Pair};
       limit = t;
     }
   };

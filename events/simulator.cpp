@@ -81,7 +81,8 @@ Simulator::Simulator(System system, SimulatorOptions options)
   }
   time_ = last_particle_event_ = n > 0 ? *std::max_element(p.clock.begin(), p.clock.end()) : 0.0;
   hot_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) refresh_hot(static_cast<std::int32_t>(i));
+  body_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
 
@@ -123,12 +124,25 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   restored_action_times_ = std::move(state.action_times);
   restored_ = true;
   hot_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) refresh_hot(static_cast<std::int32_t>(i));
+  body_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
+}
+
+void Simulator::copy_state_to(ParticleStore& p) const {
+  for (std::size_t i = 0; i < hot_.size(); ++i) {
+    p.position[i] = hot_[i].position;
+    p.velocity[i] = hot_[i].velocity;
+    p.clock[i] = hot_[i].clock;
+    p.spin[i] = body_[i].spin;
+    p.last_collision[i] = body_[i].last_collision;
+    p.event_counter[i] = body_[i].event_counter;
+  }
 }
 
 EngineState Simulator::state() const {
   EngineState s;
   s.particles = system_.particles;
+  copy_state_to(s.particles);
   const std::size_t n = system_.particles.size();
   s.cells.resize(n);
   s.places.resize(n);
@@ -201,6 +215,7 @@ void Simulator::fire_action(std::size_t k) {
   PeriodicAction& action = actions_[k];
   time_ = action.next_time;
   if (!action.step) {
+    store_state();
     action.action();
     action.next_time += action.interval;
     calendar_.set(end_slot_ + 1 + k, action.next_time);
@@ -210,6 +225,7 @@ void Simulator::fire_action(std::size_t k) {
   const std::size_t n = p.size();
   for (std::size_t i = 0; i < n; ++i) advance(static_cast<std::int32_t>(i), time_);
   last_particle_event_ = time_;
+  store_state();
   GlobalStep step{time_, p, flights_};
   action.step(step);
   if (flights_.size() != n) throw std::logic_error(action.name + " changed the number of flights");
@@ -218,8 +234,8 @@ void Simulator::fire_action(std::size_t k) {
   calendar_.set(end_slot_ + 1 + k, action.next_time);
   horizon_ = next_synchronisation();
   for (std::size_t i = 0; i < n; ++i) {
-    ++p.event_counter[i];
-    refresh_hot(static_cast<std::int32_t>(i));
+    load_records(static_cast<std::int32_t>(i));
+    ++body_[i].event_counter;
   }
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
@@ -236,6 +252,7 @@ bool Simulator::run_until(double t_end) {
       countdown = 4096;
       if (stop_flag_ != nullptr && *stop_flag_ != 0) {
         calendar_.set(end_slot_, kNever);
+        store_state();
         return false;
       }
     }
@@ -251,13 +268,15 @@ bool Simulator::run_until(double t_end) {
       if (next < end_slot_) prefetch_particle(static_cast<std::int32_t>(next));
       try {
         process_particle_event(static_cast<std::int32_t>(slot));
-      } catch (...) {  // the stall detector: leave the calendar as the agenda says
+      } catch (...) {  // the stall detector: leave the calendar and the store consistent
         calendar_.set(slot, next_event(static_cast<std::int32_t>(slot)).time);
+        store_state();
         throw;
       }
     } else if (slot == end_slot_) {
       calendar_.set(end_slot_, kNever);
       time_ = t_end;
+      store_state();
       return true;
     } else {
       fire_action(slot - end_slot_ - 1);
@@ -266,32 +285,32 @@ bool Simulator::run_until(double t_end) {
 }
 
 void Simulator::advance(std::int32_t i, double t) {
-  ParticleStore& p = system_.particles;
-  const double dt = t - p.clock[i];
+  HotState& m = hot_[i];
+  const double dt = t - m.clock;
   if (dt == 0.0) return;
   if (relax_) {
     const RelaxFlight& f = flights_[i];
-    p.position[i] += f.displacement(p.velocity[i], dt);
-    p.velocity[i] = f.velocity(p.velocity[i], dt);
+    m.position += f.displacement(m.velocity, dt);
+    m.velocity = f.velocity(m.velocity, dt);
   } else if (has_gravity_) {
-    p.position[i] = system_.flight.position(p.position[i], p.velocity[i], dt);
-    p.velocity[i] = system_.flight.velocity(p.velocity[i], dt);
+    m.position = system_.flight.position(m.position, m.velocity, dt);
+    m.velocity = system_.flight.velocity(m.velocity, dt);
   } else {
-    p.position[i] += dt * p.velocity[i];
+    m.position += dt * m.velocity;
   }
-  p.clock[i] = t;
+  m.clock = t;
 }
 
 Vec3 Simulator::position(std::size_t i) const {
-  const ParticleStore& p = system_.particles;
-  if (relax_) return p.position[i] + flights_[i].displacement(p.velocity[i], time_ - p.clock[i]);
-  return system_.flight.position(p.position[i], p.velocity[i], time_ - p.clock[i]);
+  const HotState& m = hot_[i];
+  if (relax_) return m.position + flights_[i].displacement(m.velocity, time_ - m.clock);
+  return system_.flight.position(m.position, m.velocity, time_ - m.clock);
 }
 
 Vec3 Simulator::velocity(std::size_t i) const {
-  const ParticleStore& p = system_.particles;
-  if (relax_) return flights_[i].velocity(p.velocity[i], time_ - p.clock[i]);
-  return system_.flight.velocity(p.velocity[i], time_ - p.clock[i]);
+  const HotState& m = hot_[i];
+  if (relax_) return flights_[i].velocity(m.velocity, time_ - m.clock);
+  return system_.flight.velocity(m.velocity, time_ - m.clock);
 }
 
 Energies Simulator::energies() const {
@@ -299,7 +318,7 @@ Energies Simulator::energies() const {
   const ParticleStore& p = system_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
     e.translational += 0.5 * p.mass[i] * velocity(i).squaredNorm();
-    e.rotational += 0.5 * p.inertia[i] * p.spin[i].squaredNorm();
+    e.rotational += 0.5 * p.inertia[i] * body_[i].spin.squaredNorm();
     e.potential -= p.mass[i] * system_.flight.gravity.dot(position(i));
   }
   e.dissipated = statistics_.dissipated_energy;
@@ -325,7 +344,7 @@ void Simulator::process_particle_event(std::int32_t i) {
   }
   switch (event.kind) {
     case EventKind::Pair:
-      if (system_.particles.event_counter[event.partner] != event.partner_counter) {
+      if (body_[event.partner].event_counter != event.partner_counter) {
         ++statistics_.invalid_events;
         predict(i, /*new_trajectory=*/false);
         return;

@@ -135,6 +135,9 @@ class Simulator {
 
   /// The current time, s.
   double time() const { return time_; }
+  /// Box, walls, species, laws and particles. The particle store is up to date (each state as
+  /// of its particle's clock) whenever run_until is not running, and inside actions; read the
+  /// state at the current time through position(i), velocity(i) and spin(i).
   const System& system() const { return system_; }
   const SimulatorOptions& options() const { return options_; }
   const RunStatistics& statistics() const { return statistics_; }
@@ -146,7 +149,7 @@ class Simulator {
   /// Particle i's velocity at the current time, m/s.
   Vec3 velocity(std::size_t i) const;
   /// Particle i's spin, rad/s.
-  const Vec3& spin(std::size_t i) const { return system_.particles.spin[i]; }
+  const Vec3& spin(std::size_t i) const { return body_[i].spin; }
   Energies energies() const;
 
   /// The event particle i is waiting for (its calendar entry): the earlier of its next
@@ -202,12 +205,9 @@ class Simulator {
   /// CPU; changes nothing). Always inlined: GCC deems a function of prefetches alone free of
   /// effects and deletes calls to it.
   [[gnu::always_inline]] void prefetch_particle(std::int32_t i) const {
-    const ParticleStore& p = system_.particles;
     __builtin_prefetch(&agenda_[i]);
     __builtin_prefetch(&hot_[i]);
-    __builtin_prefetch(&p.position[i]);
-    __builtin_prefetch(&p.velocity[i]);
-    __builtin_prefetch(&p.clock[i]);
+    __builtin_prefetch(&body_[i]);
     grid_.prefetch(i);
   }
   void collide_pair(std::int32_t i, std::int32_t j, double t);
@@ -220,18 +220,45 @@ class Simulator {
   void book_collision(std::int32_t i, double t, std::int32_t partner_code);
   void check_pair_invariants(std::int32_t i, std::int32_t j, const Vec3& momentum_before) const;
 
-  /// The part of a particle's state that every prediction reads, in one cache line. It mirrors
-  /// the ParticleStore, which stays the record of the state; refresh_hot(i) copies after every
-  /// change.
+  /// During a run the engine keeps each particle's changing state in two 64-byte records of
+  /// its own, and the System's particle store is brought up to date (store_state) whenever
+  /// anything outside may read it: when run_until returns, before an action, and around a
+  /// synchronising step. An event then touches one cache line per record, where the store's
+  /// arrays cost a cache miss each (a collision read ten of them per particle).
+  ///
+  /// Motion: what every prediction reads (the delayed state and the radius).
   using HotState = PairState;
-  void refresh_hot(std::int32_t i) {
+  /// The rest of what a collision reads and changes.
+  struct alignas(64) Body {
+    Vec3 spin = Vec3::Zero();         ///< rad/s.
+    double inverse_mass = 0;          ///< 1 / m_i, 1/kg.
+    double inverse_inertia = 0;       ///< 1 / I_i, 1/(kg m^2).
+    double last_collision = -kNever;  ///< Time of the last collision, s (TC model).
+    std::uint32_t species = 0;        ///< Index into the species list.
+    std::uint32_t event_counter = 0;  ///< Bumped whenever the trajectory changes.
+    bool fixed = false;               ///< Of a fixed species: infinite mass in collisions.
+  };
+  /// Particle i's records from the particle store (at the start, and after a step).
+  void load_records(std::int32_t i) {
     const ParticleStore& p = system_.particles;
     hot_[i] = HotState{p.position[i], p.clock[i], p.velocity[i], p.radius[i]};
+    body_[i] = Body{p.spin[i],
+                    1.0 / p.mass[i],
+                    1.0 / p.inertia[i],
+                    p.last_collision[i],
+                    p.species[i],
+                    p.event_counter[i],
+                    system_.species[p.species[i]].fixed};
   }
+  /// Writes every particle's changing state from the records into `p`.
+  void copy_state_to(ParticleStore& p) const;
+  /// Brings the System's particle store up to date with the records.
+  void store_state() { copy_state_to(system_.particles); }
 
   System system_;
   SimulatorOptions options_;
-  std::vector<HotState> hot_;
+  std::vector<HotState> hot_;  ///< Per particle: its motion (see load_records).
+  std::vector<Body> body_;     ///< Per particle: the rest of its changing state.
   HierarchicalGrid grid_;
   Calendar calendar_;
   /// What one particle waits for, and its stall bookkeeping: read and written at each of its

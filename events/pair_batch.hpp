@@ -68,7 +68,8 @@ static_assert(sizeof(PairState) == 64, "one cache line, two halves of four doubl
 struct PairBatch {
   /// Most candidates per batch (a multiple of the vector width, 4).
   static constexpr int kCapacity = 64;
-  const PairState* state[kCapacity];   ///< Each candidate's record.
+  /// Each candidate's record; three spare entries let pad_to_vectors write without a branch.
+  const PairState* state[kCapacity + 3];
   alignas(32) double time[kCapacity];  ///< Output: contact time with the query, s, or kNever.
   int count = 0;                       ///< Candidates filled in.
   /// Output: the first candidate with the earliest contact time, or -1 if none ever touches.
@@ -76,6 +77,12 @@ struct PairBatch {
 
   /// Appends a candidate.
   void add(const PairState* record) { state[count++] = record; }
+  /// Pads `found` candidates to whole vectors of four with `padding` (a partner that never
+  /// touches), without a branch (how many are missing is unpredictable).
+  void pad_to_vectors(int found, const PairState* padding) {
+    state[found] = state[found + 1] = state[found + 2] = padding;
+    count = (found + 3) & ~3;
+  }
 };
 
 /// The particle whose contacts are sought, with what the batch test needs of the system.

@@ -127,9 +127,7 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
   // equal times).
   PairBatch batch;
   auto test_batch = [&](int found) {
-    batch.count = found;
-    // Pad to whole vectors with partners that never touch (no relative velocity).
-    while (batch.count % 4 != 0) batch.add(&padding);
+    batch.pad_to_vectors(found, &padding);
     if (wrapped)
       contact_times<kGravity, true>(query, batch);
     else
@@ -143,9 +141,9 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
   int found = 0;
   for (int c = 0; c < occupied; ++c) {
     for (std::int32_t j = first[c]; j >= 0; j = next[j]) {
-      if (j == i) continue;
       batch.state[found] = hot + j;
-      if (++found == PairBatch::kCapacity) {
+      found += j != i;  // i itself is overwritten by the next candidate (no branch to mispredict)
+      if (found == PairBatch::kCapacity) {
         test_batch(found);
         found = 0;
       }

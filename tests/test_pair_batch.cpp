@@ -62,7 +62,8 @@ void check_random_batches(std::uint64_t seed) {
       if (round % 3 == 0 && k % 4 == 3) records[k] = records[k - 3];
       batch.add(&records[k]);
     }
-    while (batch.count % 4 != 0) batch.add(&padding);
+    batch.pad_to_vectors(batch.count, &padding);
+    ASSERT_EQ(batch.count, (count + 3) / 4 * 4) << "padded to whole vectors of four";
     contact_times<kGravity, kImage>(query, batch);
     int first_earliest = -1;  // what a loop over the candidates in order picks
     for (int k = 0; k < batch.count; ++k)

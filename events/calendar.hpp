@@ -44,15 +44,15 @@ class Calendar {
     times_[slot] = time;
     const std::size_t block = slot / kBlock;
     const Entry current = *handles_[block];
-    Entry best = current;
+    // The direction is known here, so the heap is told it (increase: towards the top) and
+    // skips the comparison with the parent that a plain update makes first.
     if (time < current.time || (time == current.time && slot < current.slot)) {
-      best = Entry{time, static_cast<std::uint32_t>(slot)};
+      heap_.increase(handles_[block], Entry{time, static_cast<std::uint32_t>(slot)});
     } else if (slot == current.slot) {
-      best = earliest_in(block);  // the block's earliest entry got later: look again
-    } else {
-      return;  // a later entry than the block's earliest: nothing moves
+      // The block's earliest entry got later (or stayed): look again; the block sinks.
+      heap_.decrease(handles_[block], earliest_in(block));
     }
-    heap_.update(handles_[block], best);
+    // Otherwise a later entry than the block's earliest: nothing moves.
   }
   /// The slot whose entry comes first.
   std::size_t top_slot() const { return heap_.top().slot; }

@@ -27,6 +27,7 @@ double Simulator::wall_time(std::int32_t i, const Wall& wall) const {
 }
 
 Event Simulator::cell_crossing(std::int32_t i) const {
+  if (!has_gravity_) return straight_cell_crossing(i);
   Event best;
   const HotState& p = hot_[i];
   const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
@@ -46,6 +47,29 @@ Event Simulator::cell_crossing(std::int32_t i) const {
   return best;
 }
 
+Event Simulator::straight_cell_crossing(std::int32_t i) const {
+  // On each axis only the face ahead can be reached: at s = -C / B (clamped at 0) with
+  // B = |v_k| and C the signed distance past that face, which is first_upward_crossing's linear
+  // case operation for operation (so the same time bit for bit), here without its branches:
+  // which face, and whether the axis wins, depend on the velocity and mispredicted often.
+  const HotState& p = hot_[i];
+  const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
+  double best_time = kNever;
+  int best_face = -1;
+  for (int k = 0; k < 3; ++k) {
+    const double v = p.velocity[k];
+    const bool up = v > 0.0;
+    const double B = up ? v : -v;
+    const double C = up ? p.position[k] - upper[k] : lower[k] - p.position[k];
+    const double s = -C / B;
+    const bool open = B > 0.0 && !grid_.is_outer_face(i, k, up ? +1 : -1);
+    const double t = open ? p.clock + (s > 0.0 ? s : 0.0) : kNever;
+    const bool earlier = t < best_time;  // the first axis of equal times, as in cell_crossing
+    best_face = earlier ? 2 * k + up : best_face;
+    best_time = earlier ? t : best_time;
+  }
+  return best_face < 0 ? Event{} : Event{best_time, best_face, 0, EventKind::CellCrossing};
+}
 
 template <bool kGravity>
 double Simulator::pair_time(std::int32_t i, std::int32_t j) const {

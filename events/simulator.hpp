@@ -178,6 +178,8 @@ class Simulator {
   double pair_time(std::int32_t i, std::int32_t j) const;
   double wall_time(std::int32_t i, const Wall& wall) const;
   Event cell_crossing(std::int32_t i) const;
+  /// cell_crossing without gravity (straight flights), bit for bit the same event.
+  Event straight_cell_crossing(std::int32_t i) const;
   /// Earliest contact of i with the particles of the given cells of its own level, if earlier
   /// than best_time (updated); returns the partner or -1.
   template <bool kGravity>

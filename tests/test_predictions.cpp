@@ -13,12 +13,14 @@
 //   at the predicted time, and approaching.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 
 #include "core/rng.hpp"
+#include "core/roots.hpp"
 #include "events/simulator.hpp"
 #include "test_support.hpp"
 
@@ -353,6 +355,58 @@ TEST(Predictions, FallingBackThroughACellFaceUnderGravity) {
                 sim.run_until(landing + 1e-6);
                 EXPECT_EQ(sim.statistics().wall_events, 1u);
               });
+}
+
+// Without gravity the engine predicts cell crossings with a branch-free formula
+// (Simulator::straight_cell_crossing). Oracle: the general form, first_upward_crossing on both
+// faces of every axis in order (the path that flights under gravity take), which must give the
+// same face and the same time bit for bit, for every particle of a gas in a box with two walled
+// and one periodic axis (so outer faces, which no crossing may name, are exercised), at the
+// start and again after 2000 collisions (clocks then differ from particle to particle).
+TEST(Predictions, StraightCellCrossingsAreTheGeneralRootsBitForBit) {
+  Scenario sc;
+  sc.name = "crossings";
+  sc.domain = box(Vec3(0, 0, 0), Vec3(8, 9, 10), {false, true, false});
+  sc.diameters = {1.0};
+  sc.particles = 150;
+  Rng rng(2024);
+  Simulator sim(build(sc, rng));
+  auto oracle = [&](std::size_t i, const Vec3& r, const Vec3& v, double clock) {
+    const HierarchicalGrid& grid = sim.grid();
+    const auto p = static_cast<std::int32_t>(i);
+    const Vec3 lower = grid.cell_lower(p), upper = grid.cell_upper(p);
+    Event best;
+    for (int k = 0; k < 3; ++k) {
+      if (!grid.is_outer_face(p, k, +1)) {
+        const double t = clock + first_upward_crossing(0.0, v[k], r[k] - upper[k]);
+        if (t < best.time) best = Event{t, 2 * k + 1, 0, EventKind::CellCrossing};
+      }
+      if (!grid.is_outer_face(p, k, -1)) {
+        const double t = clock + first_upward_crossing(0.0, -v[k], lower[k] - r[k]);
+        if (t < best.time) best = Event{t, 2 * k, 0, EventKind::CellCrossing};
+      }
+    }
+    return best;
+  };
+  int outer_faces_nearby = 0;
+  for (int stage = 0; stage < 2; ++stage) {
+    if (stage == 1) test::run_collisions(sim, 2000, 0.05);
+    const EngineState state = sim.state();
+    for (std::size_t i = 0; i < sim.particle_count(); ++i) {
+      const ParticleStore& p = state.particles;
+      const Event expected = oracle(i, p.position[i], p.velocity[i], p.clock[i]);
+      const Event& crossing = state.crossings[i];
+      ASSERT_EQ(crossing.kind, expected.kind) << "particle " << i;
+      ASSERT_EQ(crossing.partner, expected.partner) << "particle " << i;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(crossing.time),
+                std::bit_cast<std::uint64_t>(expected.time))
+          << "particle " << i << ": " << crossing.time << " against " << expected.time;
+      for (int k : {0, 2})
+        outer_faces_nearby += sim.grid().is_outer_face(static_cast<std::int32_t>(i), k, +1) ||
+                              sim.grid().is_outer_face(static_cast<std::int32_t>(i), k, -1);
+    }
+  }
+  EXPECT_GT(outer_faces_nearby, 50) << "the walled axes' outer cells must be exercised";
 }
 
 }  // namespace

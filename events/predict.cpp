@@ -50,23 +50,27 @@ Event Simulator::cell_crossing(std::int32_t i) const {
 Event Simulator::straight_cell_crossing(std::int32_t i) const {
   // On each axis only the face ahead can be reached: at s = -C / B (clamped at 0) with
   // B = |v_k| and C the signed distance past that face, which is first_upward_crossing's linear
-  // case operation for operation (so the same time bit for bit), here without its branches:
-  // which face, and whether the axis wins, depend on the velocity and mispredicted often.
+  // case operation for operation (so the same time bit for bit: -(r - lower) is lower - r
+  // exactly). Here without branches: which face, and whether the axis wins, depend on the
+  // velocity and were mispredicted often. Selects are table lookups, minima are min().
+  static constexpr double kSign[2] = {-1.0, 1.0};
   const HotState& p = hot_[i];
-  const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
+  const Vec3 bound[2] = {grid_.cell_lower(i), grid_.cell_upper(i)};
   double best_time = kNever;
   int best_face = -1;
   for (int k = 0; k < 3; ++k) {
     const double v = p.velocity[k];
-    const bool up = v > 0.0;
-    const double B = up ? v : -v;
-    const double C = up ? p.position[k] - upper[k] : lower[k] - p.position[k];
-    const double s = -C / B;
-    const bool open = B > 0.0 && !grid_.is_outer_face(i, k, up ? +1 : -1);
-    const double t = open ? p.clock + (s > 0.0 ? s : 0.0) : kNever;
-    const bool earlier = t < best_time;  // the first axis of equal times, as in cell_crossing
-    best_face = earlier ? 2 * k + up : best_face;
-    best_time = earlier ? t : best_time;
+    const int up = v > 0.0;
+    const double B = std::abs(v);
+    const double C = kSign[up] * (p.position[k] - bound[up][k]);
+    const double s = std::max(-C / B, 0.0);
+    const bool outer[2] = {grid_.is_outer_face(i, k, -1), grid_.is_outer_face(i, k, +1)};
+    const int open = (B > 0.0) & !outer[up];
+    const double time[2] = {kNever, p.clock + s};
+    const double t = time[open];
+    const int earlier = t < best_time;  // strictly: the first axis of equal times
+    best_face += earlier * (2 * k + up - best_face);
+    best_time = std::min(best_time, t);
   }
   return best_face < 0 ? Event{} : Event{best_time, best_face, 0, EventKind::CellCrossing};
 }
@@ -162,15 +166,31 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
       best_partner = static_cast<std::int32_t>(batch.state[k] - hot);
     }
   };
+  // A cell's first two particles are taken without a branch on the list's length (0, 1 or 2
+  // more in a dense fluid, so a loop's exit mispredicted about once per cell); the rare third
+  // and later ones in a loop. A particle is written in any case and counted only when it is a
+  // candidate (not i, not a missing second), so the next write replaces it.
   int found = 0;
   for (int c = 0; c < occupied; ++c) {
-    for (std::int32_t j = first[c]; j >= 0; j = next[j]) {
-      batch.state[found] = hot + j;
-      found += j != i;  // i itself is overwritten by the next candidate (no branch to mispredict)
+    if (found > PairBatch::kCapacity - 2) {
+      test_batch(found);
+      found = 0;
+    }
+    const std::int32_t j1 = first[c];
+    batch.state[found] = hot + j1;
+    found += j1 != i;
+    const std::int32_t j2 = next[j1];
+    const bool second = j2 >= 0;
+    const std::int32_t k = second ? j2 : j1;
+    batch.state[found] = hot + k;
+    found += second & (j2 != i);
+    for (std::int32_t j = second ? next[k] : -1; j >= 0; j = next[j]) {
       if (found == PairBatch::kCapacity) {
         test_batch(found);
         found = 0;
       }
+      batch.state[found] = hot + j;
+      found += j != i;
     }
   }
   if (found > 0) test_batch(found);

@@ -62,8 +62,8 @@ void Simulator::collide_pair(std::int32_t i, std::int32_t j, double t) {
   ++statistics_.pair_events;
   statistics_.virial += dr * outcome.impulse.transpose();
   statistics_.dissipated_energy += outcome.dissipated;
-  ++bi.event_counter;
-  ++bj.event_counter;
+  ++counter_[i];
+  ++counter_[j];
   predict(i);
   predict(j);
   book_collision(i, t, j);
@@ -94,7 +94,7 @@ void Simulator::collide_wall(std::int32_t i, std::int32_t w, double t) {
   ++statistics_.wall_events;
   statistics_.wall_impulse[w] -= outcome.impulse;
   statistics_.dissipated_energy += outcome.dissipated;
-  ++b.event_counter;
+  ++counter_[i];
   predict(i);
   book_collision(i, t, -1 - w);
   b.last_collision = t;

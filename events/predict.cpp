@@ -110,12 +110,12 @@ void Simulator::predict_with(std::int32_t i) {
   double best_pair_time = best.time;
   const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
-    best = Event{best_pair_time, best_partner, body_[best_partner].event_counter, EventKind::Pair};
+    best = Event{best_pair_time, best_partner, counter_[best_partner], EventKind::Pair};
   // Other levels (polydisperse systems).
   if (grid_.levels().size() > 1) {
     grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, [&](std::int32_t j) {
       const double t = pair_time<kGravity>(i, j);
-      if (t < best.time) best = Event{t, j, body_[j].event_counter, EventKind::Pair};
+      if (t < best.time) best = Event{t, j, counter_[j], EventKind::Pair};
     });
   }
   agenda_[i].collision = best;
@@ -207,7 +207,7 @@ void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) 
   const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
     agenda_[i].collision =
-        Event{best_pair_time, best_partner, body_[best_partner].event_counter, EventKind::Pair};
+        Event{best_pair_time, best_partner, counter_[best_partner], EventKind::Pair};
   schedule(i);
 }
 

@@ -123,7 +123,7 @@ void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
     if (j == i) return;
     const double t = relax_pair_time(i, j, limit);
     if (t < best.time) {
-      best = Event{t, j, body_[j].event_counter, EventKind::Pair};
+      best = Event{t, j, counter_[j], EventKind::Pair};
       limit = t;
     }
   };

@@ -82,6 +82,7 @@ Simulator::Simulator(System system, SimulatorOptions options)
   time_ = last_particle_event_ = n > 0 ? *std::max_element(p.clock.begin(), p.clock.end()) : 0.0;
   hot_.resize(n);
   body_.resize(n);
+  counter_.resize(n);
   for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
@@ -125,6 +126,7 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   restored_ = true;
   hot_.resize(n);
   body_.resize(n);
+  counter_.resize(n);
   for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
 }
 
@@ -135,7 +137,7 @@ void Simulator::copy_state_to(ParticleStore& p) const {
     p.clock[i] = hot_[i].clock;
     p.spin[i] = body_[i].spin;
     p.last_collision[i] = body_[i].last_collision;
-    p.event_counter[i] = body_[i].event_counter;
+    p.event_counter[i] = counter_[i];
   }
 }
 
@@ -235,7 +237,7 @@ void Simulator::fire_action(std::size_t k) {
   horizon_ = next_synchronisation();
   for (std::size_t i = 0; i < n; ++i) {
     load_records(static_cast<std::int32_t>(i));
-    ++body_[i].event_counter;
+    ++counter_[i];
   }
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
 }
@@ -344,7 +346,7 @@ void Simulator::process_particle_event(std::int32_t i) {
   }
   switch (event.kind) {
     case EventKind::Pair:
-      if (body_[event.partner].event_counter != event.partner_counter) {
+      if (counter_[event.partner] != event.partner_counter) {
         ++statistics_.invalid_events;
         predict(i, /*new_trajectory=*/false);
         return;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "scenarios/sample_grid.hpp"
+#include "scenarios/analysis/sample_grid.hpp"
 
 namespace carom::test {
 

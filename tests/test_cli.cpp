@@ -17,7 +17,7 @@
 #include <string>
 #include <thread>
 
-#include "scenarios/run_output.hpp"
+#include "scenarios/run/run_output.hpp"
 
 namespace fs = std::filesystem;
 using namespace carom;

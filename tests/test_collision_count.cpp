@@ -38,8 +38,8 @@
 
 #include "core/rng.hpp"
 #include "events/simulator.hpp"
-#include "scenarios/run_analysis.hpp"
-#include "scenarios/scene.hpp"
+#include "scenarios/analysis/run_analysis.hpp"
+#include "scenarios/scene/scene.hpp"
 
 namespace carom {
 namespace {

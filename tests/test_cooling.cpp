@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "scenarios/granular_gas.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
 namespace carom {

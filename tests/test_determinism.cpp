@@ -7,7 +7,7 @@
 
 #include "core/rng.hpp"
 
-#include "scenarios/granular_gas.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
 namespace carom {

@@ -14,7 +14,7 @@
 
 #include "analysis_support.hpp"
 #include "core/rng.hpp"
-#include "scenarios/dispersion.hpp"
+#include "scenarios/analysis/dispersion.hpp"
 
 namespace carom {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "analysis_support.hpp"
 #include "fluid/drag.hpp"
-#include "scenarios/gas_run.hpp"
-#include "scenarios/scene.hpp"
+#include "scenarios/run/gas_run.hpp"
+#include "scenarios/scene/scene.hpp"
 #include "test_support.hpp"
 
 namespace carom {

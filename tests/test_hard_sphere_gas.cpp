@@ -1,7 +1,7 @@
 // The dense elastic hard-sphere fluid (phi = 0.45): no overlaps, exact conservation laws.
 #include <gtest/gtest.h>
 
-#include "scenarios/granular_gas.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
 namespace carom {

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "core/rng.hpp"
-#include "scenarios/enskog.hpp"
-#include "scenarios/local_fields.hpp"
+#include "scenarios/analysis/enskog.hpp"
+#include "scenarios/analysis/local_fields.hpp"
 #include "analysis_support.hpp"
-#include "scenarios/sample_grid.hpp"
+#include "scenarios/analysis/sample_grid.hpp"
 
 namespace carom {
 namespace {

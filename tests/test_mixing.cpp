@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/rng.hpp"
-#include "scenarios/mixing.hpp"
+#include "scenarios/analysis/mixing.hpp"
 #include "analysis_support.hpp"
-#include "scenarios/sample_grid.hpp"
+#include "scenarios/analysis/sample_grid.hpp"
 
 namespace carom {
 namespace {

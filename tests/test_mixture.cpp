@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "scenarios/granular_gas.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
 namespace carom {

@@ -17,8 +17,8 @@
 #include <tuple>
 
 #include "core/hdf5.hpp"
-#include "scenarios/granular_gas.hpp"
-#include "scenarios/run_output.hpp"
+#include "scenarios/scene/granular_gas.hpp"
+#include "scenarios/run/run_output.hpp"
 #include "test_support.hpp"
 
 namespace carom {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "events/simulator.hpp"
-#include "scenarios/run_output.hpp"
-#include "scenarios/scene.hpp"
+#include "scenarios/run/run_output.hpp"
+#include "scenarios/scene/scene.hpp"
 
 using namespace carom;
 namespace fs = std::filesystem;

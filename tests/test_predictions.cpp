@@ -23,7 +23,7 @@
 #include "core/roots.hpp"
 #include "events/pair_batch.hpp"
 #include "events/simulator.hpp"
-#include "scenarios/granular_gas.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
 namespace carom {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/scene.hpp"
+#include "scenarios/scene/scene.hpp"
 
 using namespace carom;
 

@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "events/simulator.hpp"
-#include "scenarios/granular_gas.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 
 using namespace carom;
 

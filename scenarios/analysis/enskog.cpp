@@ -1,0 +1,29 @@
+#include "scenarios/analysis/enskog.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace carom {
+
+double contact_value(const std::vector<MixtureComponent>& mixture, std::size_t s, std::size_t t) {
+  double phi = 0.0, xi2 = 0.0;
+  for (const MixtureComponent& c : mixture) {
+    phi += std::numbers::pi / 6.0 * c.number_density * c.diameter * c.diameter * c.diameter;
+    xi2 += std::numbers::pi / 6.0 * c.number_density * c.diameter * c.diameter;
+  }
+  const double ds = mixture[s].diameter, dt = mixture[t].diameter;
+  const double D = ds * dt / (ds + dt);
+  const double empty = 1.0 - phi;
+  return 1.0 / empty + 3.0 * xi2 * D / (empty * empty) + 2.0 * xi2 * xi2 * D * D / (empty * empty * empty);
+}
+
+double enskog_frequency(const std::vector<MixtureComponent>& mixture, std::size_t s, std::size_t t, double temperature) {
+  const MixtureComponent& a = mixture[s];
+  const MixtureComponent& b = mixture[t];
+  const double d = 0.5 * (a.diameter + b.diameter);
+  const double reduced_mass = a.mass * b.mass / (a.mass + b.mass);
+  return b.number_density * contact_value(mixture, s, t) * d * d *
+         std::sqrt(8.0 * std::numbers::pi * temperature / reduced_mass);
+}
+
+}  // namespace carom

@@ -1,0 +1,203 @@
+#include "scenarios/cli/check.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/cell_grid.hpp"
+#include "scenarios/analysis/enskog.hpp"
+#include "fluid/drag.hpp"
+
+namespace carom {
+
+namespace {
+std::string vec(const Vec3& v) {
+  std::string text("[");
+  for (int k = 0; k < 3; ++k) {
+    text += format_number(v[k]);
+    text += k < 2 ? ", " : "]";
+  }
+  return text;
+}
+std::string law_text(const ContactLaw& law) {
+  std::string text = "e = " + format_number(law.restitution) + ", mu = " + format_number(law.friction) +
+                     ", beta0 = " + format_number(law.tangential_restitution);
+  if (law.static_friction >= 0) text += ", mu_static = " + format_number(law.static_friction);
+  return text;
+}
+}  // namespace
+
+/// The gas part of the model, with the numbers that say whether it is needed and enough.
+/// Four significant digits: derived estimates, not inputs.
+static std::string short_number(double x) {
+  std::ostringstream out;
+  out.precision(4);
+  out << x;
+  return out.str();
+}
+
+static void describe_gas(const Scene& scene, std::ostringstream& out) {
+  const GasSettings& gas = scene.gas;
+  if (gas.coupling == CouplingLevel::None) {
+    out << "  gas coupling: none (no [gas]: particles move in vacuum; right for granular gases and for "
+           "particles so heavy or fast that drag does not matter)\n";
+    out << "  flight: ballistic (exact parabolas between events)\n";
+    return;
+  }
+  const System& system = scene.system;
+  const double g = system.flight.gravity.norm();
+  out << "  gas coupling: "
+      << (gas.coupling == CouplingLevel::OneWay
+              ? "one-way (the gas moves the particles; they neither take its volume nor push it: right "
+                "while the solid fraction stays below ~1e-3)"
+              : "two-way (porosity in the gas equations, drag reaction on the gas: needed for beds)")
+      << "\n";
+  out << "  gas: rho_g = " << short_number(gas.density) << " kg/m^3, mu_g = " << short_number(gas.viscosity)
+      << " Pa s on " << gas.cells[0] << " x " << gas.cells[1] << " x " << gas.cells[2] << " cells, fluid step "
+      << short_number(gas.time_step) << " s, drag closure " << gas.closure << "\n";
+  for (int s = 0; s < 6; ++s) {
+    const GasSide& side = gas.sides[s];
+    if (side.kind == GasSide::Kind::Inlet)
+      out << "  inlet " << gas_side_names()[s] << ": superficial velocity " << short_number(side.velocity) << " m/s"
+          << (side.ramp_time > 0 ? " (ramped over " + short_number(side.ramp_time) + " s)" : std::string())
+          << (side.jets.empty() ? "" : ", with " + std::to_string(side.jets.size()) + " jet(s)") << "\n";
+  }
+  const DragClosure closure(gas.closure, gas.fluidization_porosity, g > 0 ? g : 9.81);
+  for (const Species& sp : system.species) {
+    DragInput in;
+    in.diameter = in.sauter_diameter = sp.diameter;
+    in.gas_density = gas.density;
+    in.gas_viscosity = gas.viscosity;
+    in.particle_density = sp.density;
+    const double stokes_tau = sp.density * sp.diameter * sp.diameter / (18.0 * gas.viscosity);
+    out << "  " << sp.name << ": Stokes relaxation time " << short_number(stokes_tau) << " s";
+    if (g > 0) {
+      out << ", terminal velocity " << short_number(closure.terminal_velocity(in)) << " m/s, U_mf "
+          << short_number(closure.minimum_fluidization_velocity(in, 0.4)) << " m/s (" << gas.closure
+          << " at eps_mf = 0.4; Wen-Yu correlation " << short_number(wen_yu_minimum_fluidization_velocity(in, g))
+          << " m/s)";
+    }
+    out << "\n";
+  }
+  if (scene.flight.model == FlightSettings::Model::Kick)
+    out << "  flight: kick (ballistic, explicit drag kicks every " << short_number(scene.flight.particle_step)
+        << " s; stable only while that is below 2 tau of every particle, checked at every fluid step)\n";
+  else
+    out << "  flight: relax (exact flight under gravity and the drag frozen for each fluid step: stable for any "
+           "step, events exact)\n";
+}
+
+std::string describe_scene(const Scene& scene) {
+  const System& system = scene.system;
+  const ParticleStore& p = system.particles;
+  const std::size_t S = system.species.size(), W = system.walls.size();
+  std::ostringstream out;
+  out << "scene \"" << scene.name << "\" (" << scene.file << ")\n";
+  if (!scene.description.empty()) out << "  " << scene.description << "\n";
+
+  const Domain& d = system.domain;
+  out << "\ndomain: " << vec(d.lower) << " to " << vec(d.upper) << " m, volume " << format_number(d.volume()) << " m^3\n";
+  out << "  periodic axes:";
+  bool any_periodic = false;
+  for (int k = 0; k < 3; ++k)
+    if (d.periodic[k]) {
+      out << " " << "xyz"[k];
+      any_periodic = true;
+    }
+  out << (any_periodic ? "" : " none") << "\n  walls:";
+  for (const Wall& w : system.walls) out << " " << w.name << (w.shape == Wall::Shape::Cylinder ? " (cylinder)" : "");
+  out << (W ? "" : " none") << "\n  gravity: " << vec(system.flight.gravity) << " m/s^2\n";
+
+  std::vector<std::size_t> count(S, 0);
+  for (std::uint32_t s : p.species) ++count[s];
+  double solid = 0.0;
+  out << "\nspecies:\n";
+  for (std::size_t s = 0; s < S; ++s) {
+    const Species& sp = system.species[s];
+    solid += static_cast<double>(count[s]) * sp.volume();
+    out << "  " << sp.name << ": d = " << format_number(sp.diameter) << " m, rho = " << format_number(sp.density)
+        << " kg/m^3, m = " << format_number(sp.mass()) << " kg, " << count[s] << " particles";
+    if (scene.fills[s]) {
+      const Fill& f = *scene.fills[s];
+      out << " (" << (f.arrangement == Fill::Arrangement::Random ? "random" : f.arrangement == Fill::Arrangement::Fcc ? "fcc" : "cubic")
+          << " in region \"" << scene.regions[f.region].name << "\")";
+    }
+    out << "\n";
+  }
+  out << "  total " << p.size() << " particles, solid volume fraction of the domain " << format_number(solid / d.volume()) << "\n";
+  if (scene.temperature > 0) out << "  initial granular temperature " << format_number(scene.temperature) << " J (Maxwellian)\n";
+  if (scene.rms_velocity > 0) out << "  initial rms velocity " << format_number(scene.rms_velocity) << " m/s (Maxwellian)\n";
+
+  out << "\ncontact laws (Walton):\n";
+  bool friction = false, dissipative = false;
+  for (std::size_t s = 0; s < S; ++s) {
+    for (std::size_t t = s; t < S; ++t) {
+      const ContactLaw& law = system.materials.pair(s, t);
+      friction |= law.friction > 0;
+      dissipative |= law.restitution < 1;
+      out << "  " << system.species[s].name << "-" << system.species[t].name << ": " << law_text(law) << "\n";
+    }
+    for (std::size_t w = 0; w < W; ++w) {
+      const ContactLaw& law = system.materials.wall(s, w);
+      friction |= law.friction > 0;
+      dissipative |= law.restitution < 1;
+      out << "  " << system.species[s].name << "@" << system.walls[w].name << ": " << law_text(law) << "\n";
+    }
+  }
+  out << "\nmodel:\n";
+  describe_gas(scene, out);
+  out << "  rotation: " << (friction ? "on (some mu > 0: collisions exchange spin)" : "off (every mu = 0: smooth spheres, spins never change)") << "\n";
+  const CollapseOptions& c = scene.options.collapse;
+  if (c.contact_time > 0)
+    out << "  inelastic collapse: TC model, collisions within " << format_number(c.contact_time) << " s of a particle's previous one are elastic\n";
+  else if (dissipative && (system.flight.has_gravity()))
+    out << "  inelastic collapse: no remedy, and the scene is dissipative under gravity: a bed at rest WILL collapse; consider [collisions] collapse = { model = \"tc\", contact_time = ... }\n";
+  else
+    out << "  inelastic collapse: no remedy" << (dissipative ? " (dissipative: clusters may collapse in long runs)" : " (elastic: none needed)") << "\n";
+  if (c.elastic_below_speed > 0) out << "  impacts slower than " << format_number(c.elastic_below_speed) << " m/s are elastic\n";
+
+  if (p.size() > 0) {
+    HierarchicalGrid grid(d, p.radius, scene.options.grid_level_ratio);
+    out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "")
+        << " (a new level below " << format_number(scene.options.grid_level_ratio) << " x the diameter above)\n";
+    for (std::size_t l = 0; l < grid.levels().size(); ++l) {
+      const auto& level = grid.levels()[l];
+      out << "    level " << l << ": " << level.cells[0] << " x " << level.cells[1] << " x " << level.cells[2]
+          << " cells of " << vec(level.cell_size) << " m, largest radius " << format_number(level.max_radius) << " m\n";
+    }
+  }
+
+  const bool homogeneous = !system.flight.has_gravity() && W == 0 && d.periodic[0] && d.periodic[1] && d.periodic[2];
+  double temperature = scene.temperature;
+  if (temperature == 0.0 && p.size() > 0) {
+    double kinetic = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+    temperature = 2.0 * kinetic / (3.0 * static_cast<double>(p.size()));
+  }
+  out << "\nexpected collision rate (Enskog, BMCSL contact value):\n";
+  if (!homogeneous || temperature <= 0.0 || p.size() == 0) {
+    out << "  not applicable (needs a periodic, gravity-free box without walls and a non-zero temperature)\n";
+  } else {
+    std::vector<MixtureComponent> mixture;
+    for (std::size_t s = 0; s < S; ++s)
+      mixture.push_back({static_cast<double>(count[s]) / d.volume(), system.species[s].diameter, system.species[s].mass()});
+    double total = 0.0;
+    for (std::size_t s = 0; s < S; ++s)
+      for (std::size_t t = 0; t < S; ++t) {
+        const double nu = enskog_frequency(mixture, s, t, temperature);
+        total += 0.5 * static_cast<double>(count[s]) * nu;
+        out << "  " << system.species[s].name << " with " << system.species[t].name << ": " << format_number(nu)
+            << " collisions/s per " << system.species[s].name << " particle (g = " << format_number(contact_value(mixture, s, t)) << ")\n";
+      }
+    out << "  at T = " << format_number(temperature) << " J: " << format_number(total) << " collisions/s in all";
+    if (!dissipative) out << ", about " << format_number(total * scene.end_time) << " collisions by t = " << format_number(scene.end_time) << " s";
+    else out << " at the start (the gas cools)";
+    out << "\n";
+  }
+  out << "\nrun: to t = " << format_number(scene.end_time) << " s; snapshots every " << format_number(scene.output.snapshot_every)
+      << " s, samples every " << format_number(scene.output.sample_every) << " s, checkpoints "
+      << (scene.output.checkpoint_every > 0 ? "every " + format_number(scene.output.checkpoint_every) + " s" : std::string("at the end"))
+      << "; seed " << scene.seed << "\n";
+  return out.str();
+}
+
+}  // namespace carom

@@ -1,0 +1,129 @@
+// carom: the command line of the event-driven hard-sphere simulator.
+//
+//   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--quiet] [--overwrite]
+//   carom resume DIR [--end T] [--quiet]
+//   carom check SCENE [--set key=value ...] [--seed N]
+//   carom info FILE.h5
+//   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
+//
+// Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
+// is written), 130 interrupted by SIGINT/SIGTERM (a checkpoint is written). See run.hpp.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iostream>
+
+#include "carom/version.hpp"
+#include "scenarios/cli/check.hpp"
+#include "scenarios/cli/info.hpp"
+#include "scenarios/run/run.hpp"
+#include "scenarios/scene/scene.hpp"
+#include "scenarios/sweep/sweep.hpp"
+
+using namespace carom;
+
+namespace {
+constexpr const char* kExitCodes =
+    "Exit codes: 0 ok; 1 runtime failure (inelastic collapse, I/O error); 2 bad scene or usage (nothing written); "
+    "130 interrupted by SIGINT/SIGTERM (checkpoint written; continue with carom resume DIR).";
+}
+
+int main(int argc, char** argv) {
+  CLI::App app{"carom: event-driven hard-sphere granular simulator"};
+  app.footer(kExitCodes);
+  app.set_version_flag("--version", std::string("carom ") + kVersion);
+  app.require_subcommand(1);
+
+  std::string scene_path, out_dir, resume_dir, info_path;
+  std::vector<std::string> overrides;
+  std::uint64_t seed = 0;
+  bool quiet = false, overwrite = false;
+  double end_time = 0;
+
+  CLI::App* run = app.add_subcommand("run", "run a scene; writes DIR/run.h5 (+ run.xmf), checkpoint.h5, summary.json");
+  run->add_option("scene", scene_path, "scene file (TOML; see scenarios/scenes/SCENES.md)")->required();
+  run->add_option("--set", overrides, "change a scene value before validation, e.g. --set collisions.default.e=0.9")
+      ->type_name("KEY=VALUE");
+  CLI::Option* out_option = run->add_option("--out", out_dir, "output directory (default: SCENE's name + .out)");
+  CLI::Option* seed_option = run->add_option("--seed", seed, "random seed (replaces initial.seed)");
+  run->add_flag("--quiet", quiet, "no progress line and no messages but errors");
+  run->add_flag("--overwrite", overwrite, "replace the outputs of an earlier run in DIR");
+
+  CLI::App* resume = app.add_subcommand("resume", "continue a run from DIR/checkpoint.h5, bit for bit");
+  resume->add_option("dir", resume_dir, "output directory of the run")->required();
+  CLI::Option* end_option = resume->add_option("--end", end_time, "run to this time, s (default: the scene's time.end)");
+  resume->add_flag("--quiet", quiet, "no progress line and no messages but errors");
+
+  CLI::App* check = app.add_subcommand("check", "validate a scene and print what it will model; writes nothing");
+  check->add_option("scene", scene_path, "scene file")->required();
+  check->add_option("--set", overrides, "change a scene value before validation")->type_name("KEY=VALUE");
+  CLI::Option* check_seed = check->add_option("--seed", seed, "random seed");
+
+  CLI::App* info = app.add_subcommand("info", "describe a run file or checkpoint");
+  info->add_option("file", info_path, "HDF5 file (run.h5 or checkpoint.h5)")->required();
+
+  SweepOptions sweep_options;
+  std::string sweep_out;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "run a scene over a grid of scene values and seeds, resumably; also under mpirun (see SWEEPS.md)");
+  sweep->add_option("sweep_file", sweep_options.file, "sweep file (TOML; see scenarios/sweep/SWEEPS.md)")->required();
+  sweep->add_option("--jobs,-j", sweep_options.jobs, "cases run at once (per MPI rank)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
+  CLI::Option* sweep_out_option = sweep->add_option("--out", sweep_out, "output directory (replaces the file's out)");
+  sweep->add_flag("--retry-failed", sweep_options.retry_failed, "run cases that failed before again, from their start");
+  sweep->add_flag("--dry-run", sweep_options.dry_run, "validate every case (as carom check) and list them; run nothing");
+  sweep->add_flag("--quiet", sweep_options.quiet, "no progress lines (errors are still printed)");
+  sweep->footer(
+      "Exit codes: 0 every case completed; 1 some case failed (summary still written); 2 bad sweep file or case "
+      "(nothing run); 130 interrupted (run the same command again to continue).");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+
+  if (*sweep) {
+    if (sweep_out_option->count() > 0) sweep_options.out = sweep_out;
+    return run_sweep(sweep_options);
+  }
+  try {
+    if (*run || *check) {
+      std::optional<std::uint64_t> chosen_seed;
+      if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = seed;
+      Scene scene = load_scene(scene_path, overrides, chosen_seed);
+      if (*check) {
+        build_initial_state(scene);
+        try {
+          Simulator probe(scene.system, scene.options);  // the checks a run makes at its start
+        } catch (const std::invalid_argument& e) {
+          throw SceneError(scene.file + ": " + e.what());
+        }
+        std::cout << describe_scene(scene);
+        return kExitOk;
+      }
+      RunOptions options;
+      options.out_dir = out_option->count() > 0 ? out_dir : std::filesystem::path(scene_path).stem().string() + ".out";
+      options.quiet = quiet;
+      options.overwrite = overwrite;
+      return run_scene(std::move(scene), options);
+    }
+    if (*resume) {
+      std::optional<double> end;
+      if (end_option->count() > 0) end = end_time;
+      return resume_run(resume_dir, end, quiet);
+    }
+    if (*info) {
+      if (!std::filesystem::exists(info_path)) throw SceneError(info_path + ": no such file");
+      print_file_info(info_path, std::cout);
+      return kExitOk;
+    }
+  } catch (const SceneError& e) {
+    std::cerr << "carom: error: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "carom: failed: " << e.what() << "\n";
+    return kExitFailure;
+  }
+  return kExitUsage;
+}

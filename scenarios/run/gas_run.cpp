@@ -1,0 +1,36 @@
+#include "scenarios/run/gas_run.hpp"
+
+namespace carom {
+
+std::unique_ptr<GasCoupling> attach_gas(Simulator& sim, const Scene& scene,
+                                        const std::vector<double>* saved_state) {
+  if (scene.gas.coupling == CouplingLevel::None) return nullptr;
+  const System& system = sim.system();
+  std::vector<double> density;
+  for (const Species& s : system.species) density.push_back(s.density);
+  auto gas = std::make_unique<GasCoupling>(scene.gas, system.domain, system.walls,
+                                           system.flight.gravity, density);
+  if (saved_state != nullptr)
+    gas->restore(*saved_state);
+  else
+    gas->prepare(sim.system().particles);  // porosity at t = 0 for the first outputs
+  GasCoupling* coupling = gas.get();
+  const bool kick = scene.flight.model == FlightSettings::Model::Kick;
+  const double particle_step = scene.flight.particle_step;
+  // The fluid step comes first in the calendar, so at a common time the kick uses the new drag.
+  sim.add_synchronising_action("fluid_step", sim.time(), scene.gas.time_step,
+                               [coupling, kick, particle_step](GlobalStep& step) {
+                                 coupling->step(step.time, step.particles, step.flights);
+                                 if (kick)
+                                   coupling->check_kick_stability(particle_step, step.particles,
+                                                                  step.flights);
+                               });
+  if (kick)
+    sim.add_synchronising_action("drag_kick", sim.time(), particle_step,
+                                 [coupling, particle_step](GlobalStep& step) {
+                                   coupling->kick(particle_step, step.particles, step.flights);
+                                 });
+  return gas;
+}
+
+}  // namespace carom

@@ -1,0 +1,262 @@
+#include "scenarios/run/run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <unistd.h>
+
+#include "scenarios/run/gas_run.hpp"
+#include "scenarios/run/progress.hpp"
+#include "scenarios/analysis/run_analysis.hpp"
+#include "scenarios/run/run_output.hpp"
+#include "scenarios/run/summary.hpp"
+
+namespace carom {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+
+/// First signal: ask the run to stop (run_until checks the flag every few thousand events), write a
+/// checkpoint and exit. Second signal (the user insists): leave at once, without a checkpoint.
+extern "C" void on_stop_signal(int) {
+  if (g_stop) {
+    static const char message[] = "\ncarom: second interrupt: stopping without a checkpoint\n";
+    const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
+    (void)ignored;
+    _exit(kExitInterrupted);
+  }
+  g_stop = 1;
+}
+
+/// Output instants k * interval, k = 0, 1, ... (computed, never accumulated, so a resumed run
+/// meets exactly the same instants). interval 0: none.
+struct Schedule {
+  double interval = 0;
+  std::uint64_t k = 0;
+
+  double next() const { return interval > 0 ? static_cast<double>(k) * interval : kNever; }
+  /// True when the next instant is t (up to round-off in k * interval).
+  bool due(double t) const { return interval > 0 && next() <= t + 1e-12 * std::max(std::abs(t), interval); }
+  /// Moves past every instant up to and including t.
+  void pass(double t) {
+    if (interval <= 0) return;
+    while (due(t)) ++k;
+  }
+  /// Positions the schedule at the first instant after t (after a resume).
+  void start_after(double t) {
+    if (interval <= 0) return;
+    k = static_cast<std::uint64_t>(std::max(0.0, std::floor(t / interval)));
+    while (k > 0) {  // round-off in t / interval may overshoot by one
+      --k;
+      if (due(t)) break;
+    }
+    pass(t);
+  }
+};
+
+/// The loop shared by run and resume. `fresh`: a new run, whose t = 0 outputs are written here.
+int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, RunAnalysis& analysis, const Scene& scene,
+             const RunInfo& info, const fs::path& dir, double end_time, bool fresh, bool quiet) {
+  install_stop_handlers();
+  const std::string checkpoint_path = (dir / "checkpoint.h5").string();
+  const std::string summary_path = (dir / "summary.json").string();
+  const std::string report_path = (dir / "report.md").string();
+  RunStretch stretch;
+  stretch.start_time = sim.time();
+  stretch.start_statistics = sim.statistics();
+  stretch.gas = gas;
+  if (gas != nullptr) stretch.gas_start = gas->times();
+  stretch.averages.sample(sim);
+
+  Schedule snapshots{scene.output.snapshot_every}, samples{scene.output.sample_every},
+      checkpoints{scene.output.checkpoint_every};
+  // The time averages of summary.json are taken on a schedule of simulated time (the samples',
+  // or 200 instants over the run), never at wall-clock chunk ends, so they are reproducible.
+  Schedule averages{scene.output.sample_every > 0 ? scene.output.sample_every : scene.end_time / 200.0};
+  averages.start_after(sim.time());
+  double last_snapshot = sim.time(), last_sample = sim.time();
+  if (fresh) {
+    file.write_snapshot(sim, gas);
+    file.append_sample(sim, gas, analysis.sample(sim, gas));
+    snapshots.pass(sim.time());
+    samples.pass(sim.time());
+    checkpoints.pass(sim.time());
+  } else {
+    snapshots.start_after(sim.time());
+    samples.start_after(sim.time());
+    checkpoints.start_after(sim.time());
+  }
+
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto wall_seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  };
+  ProgressLine progress(!quiet && ProgressLine::stderr_is_terminal(), sim.time(), end_time);
+  // Chunks of simulated time sized for about 0.2 s of wall time each: short enough for a prompt
+  // reaction to a signal, long enough that the loop costs nothing. They do not change the
+  // dynamics: run_until's end is a global event that touches no particle.
+  double chunk = (end_time - sim.time()) / 1000.0;
+  auto finish = [&](const std::string& status, const std::string& message) {
+    progress.finish();
+    stretch.status = status;
+    stretch.message = message;
+    stretch.wall_seconds = wall_seconds();
+    stretch.analysis_json = analysis.summary_json(sim);
+    write_text_atomically(summary_path, summary_json(sim, scene, stretch));
+    write_text_atomically(report_path, analysis.report(sim));
+  };
+
+  // A signal also stops run_until itself within a few thousand events, so even a chunk that
+  // takes long (a dense, slow phase) is interrupted promptly, at a consistent state.
+  sim.set_stop_flag(&g_stop);
+  try {
+    while (sim.time() < end_time) {
+      const double target = std::min({end_time, sim.time() + chunk, snapshots.next(), samples.next(),
+                                      checkpoints.next(), averages.next()});
+      const bool chunk_limited = target == sim.time() + chunk;
+      const auto chunk_start = std::chrono::steady_clock::now();
+      sim.run_until(target);
+      const double t = sim.time();
+      if (snapshots.due(t)) {
+        file.write_snapshot(sim, gas);
+        last_snapshot = t;
+        snapshots.pass(t);
+      }
+      if (samples.due(t)) {
+        file.append_sample(sim, gas, analysis.sample(sim, gas));
+        last_sample = t;
+        samples.pass(t);
+      }
+      if (checkpoints.due(t)) {
+        write_checkpoint(checkpoint_path, sim, info, gas);
+        checkpoints.pass(t);
+      }
+      if (averages.due(t) || t >= end_time) {
+        stretch.averages.sample(sim);
+        averages.pass(t);
+      }
+      progress.update(t, sim.statistics().events, sim.statistics().collisions());
+      const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
+      if (chunk_limited)
+        chunk *= std::clamp(0.2 / std::max(spent, 1e-6), 0.5, 2.0);
+      if (g_stop) {
+        write_checkpoint(checkpoint_path, sim, info, gas);
+        finish("interrupted", "stopped by a signal at t = " + format_number(t) + " s; continue with: carom resume " + dir.string());
+        std::cerr << "carom: interrupted at t = " << t << " s; checkpoint written. Continue with: carom resume "
+                  << dir.string() << "\n";
+        return kExitInterrupted;
+      }
+    }
+  } catch (const InelasticCollapse& e) {
+    finish("inelastic_collapse", e.what());
+    std::cerr << "carom: " << e.what() << "\n";
+    return kExitFailure;
+  } catch (const KickUnstable& e) {
+    finish("kick_unstable", e.what());
+    std::cerr << "carom: " << e.what() << "\n";
+    return kExitFailure;
+  }
+  if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
+  if (last_sample < sim.time()) file.append_sample(sim, gas, analysis.sample(sim, gas));
+  write_checkpoint(checkpoint_path, sim, info, gas);
+  finish("completed", "");
+  if (!quiet) {
+    const RunStatistics& s = sim.statistics();
+    std::cout << "carom: " << scene.name << " reached t = " << sim.time() << " s: " << s.events << " events, "
+              << s.collisions() << " collisions, " << stretch.wall_seconds << " s wall time. Outputs in "
+              << dir.string() << "\n";
+  }
+  return kExitOk;
+}
+
+/// Creates the output directory, refusing to mix a new run with an earlier one's files.
+void prepare_output_directory(const fs::path& dir, bool overwrite) {
+  const char* outputs[] = {"run.h5", "run.xmf", "checkpoint.h5", "summary.json", "report.md"};
+  std::error_code error;
+  if (fs::exists(dir, error)) {
+    if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");
+    for (const char* name : outputs) {
+      if (!fs::exists(dir / name, error)) continue;
+      if (!overwrite)
+        throw SceneError(dir.string() + " already holds the outputs of a run (" + name +
+                         "); choose another --out, remove them, or pass --overwrite");
+      fs::remove(dir / name, error);
+    }
+  }
+  fs::create_directories(dir, error);
+  if (error) throw SceneError(dir.string() + ": cannot create the output directory: " + error.message());
+}
+
+}  // namespace
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+bool stop_requested() { return g_stop != 0; }
+
+int run_scene(Scene scene, const RunOptions& options) {
+  // Everything that can be wrong with a scene is found before the first file is created.
+  build_initial_state(scene);
+  std::optional<Simulator> sim;
+  try {
+    sim.emplace(scene.system, scene.options);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": " + e.what());
+  }
+  const fs::path dir = options.out_dir;
+  prepare_output_directory(dir, options.overwrite);
+  const RunInfo info{scene.text, scene.name, scene.seed};
+  std::unique_ptr<GasCoupling> gas;
+  try {
+    gas = attach_gas(*sim, scene);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": [gas]: " + e.what());
+  }
+  RunFile file((dir / "run.h5").string(), info, sim->system(), gas.get());
+  RunAnalysis analysis(scene, *sim);
+  analysis.write_setup(file.path());
+  return run_loop(*sim, gas.get(), file, analysis, scene, info, dir, scene.end_time, true, options.quiet);
+}
+
+int resume_run(const std::string& directory, std::optional<double> end_time, bool quiet) {
+  const fs::path dir = directory;
+  const fs::path checkpoint_path = dir / "checkpoint.h5";
+  if (!fs::exists(checkpoint_path))
+    throw SceneError(directory + ": no checkpoint.h5 here; `carom resume` needs the output directory of a run");
+  Checkpoint checkpoint = read_checkpoint(checkpoint_path.string());
+  const std::string scene_file = checkpoint_path.string() + " (stored scene)";
+  std::vector<std::string> overrides;
+  if (end_time) overrides.push_back("time.end=" + format_number(*end_time));
+  Scene scene = parse_scene(checkpoint.info.scene_text, scene_file, overrides);
+  const double now = checkpoint.state.time;
+  const double end = scene.end_time;
+  if (end < now)
+    throw SceneError(directory + ": the end time " + format_number(end) + " s is before the checkpoint's time " +
+                     format_number(now) + " s");
+  RunInfo info = checkpoint.info;
+  info.scene_text = scene.text;
+  if (end == now) {
+    if (!quiet) std::cout << "carom: " << directory << " is already at t = " << now << " s; nothing to do (use --end)\n";
+    return kExitOk;
+  }
+  Simulator sim(scene.system, scene.options, std::move(checkpoint.state));
+  std::unique_ptr<GasCoupling> gas = attach_gas(sim, scene, &checkpoint.gas_state);
+  RunAnalysis analysis(scene, sim, (dir / "run.h5").string(), now);
+  std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());
+  return run_loop(sim, gas.get(), *file, analysis, scene, info, dir, end, false, quiet);
+}
+
+}  // namespace carom

@@ -1,0 +1,44 @@
+#pragma once
+/// The run loop behind `carom run` and `carom resume`: run_until in chunks, outputs on their
+/// schedule, a clean stop with a checkpoint on SIGINT/SIGTERM, summary.json at the end.
+///
+/// Exit codes (reliable; the tests check them):
+///   0    the run reached its end time
+///   1    runtime failure: inelastic collapse, an output that cannot be written, a bad checkpoint
+///   2    bad scene or bad usage: nothing was run and nothing was written
+///   130  interrupted by SIGINT or SIGTERM: a checkpoint was written, `carom resume DIR` continues.
+///        The signal is acted on between chunks of run_until (about 0.2 s of wall time); a second
+///        signal exits at once with 130 and no new checkpoint (the last periodic one remains).
+///
+/// An output directory holds run.h5 (+ run.xmf), checkpoint.h5 and summary.json. Outputs are
+/// written at k * interval (k = 0, 1, ...) of simulated time and at the end, so a resumed run
+/// writes exactly what the uninterrupted one would have (plus the extra end-of-stretch rows).
+#include <optional>
+#include <string>
+
+#include "scenarios/scene/scene.hpp"
+
+namespace carom {
+
+enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitUsage = 2, kExitInterrupted = 130 };
+
+struct RunOptions {
+  std::string out_dir;     ///< Output directory (created; must not already hold a run unless overwrite).
+  bool quiet = false;      ///< No progress line and no chatter on stdout.
+  bool overwrite = false;  ///< Replace the outputs of an earlier run in out_dir.
+};
+
+/// Validates (particles placed, initial state checked) before anything is created, then runs.
+/// Throws SceneError for a bad scene or an unusable output directory (exit 2).
+int run_scene(Scene scene, const RunOptions& options);
+
+/// Continues the run in `dir` from its checkpoint to `end_time` (default: the scene's end).
+/// Throws SceneError when dir holds no checkpoint or end_time is before the checkpoint (exit 2).
+int resume_run(const std::string& dir, std::optional<double> end_time, bool quiet);
+
+/// Installs the SIGINT/SIGTERM handlers that ask the run loop to stop at the next chunk.
+void install_stop_handlers();
+/// True once SIGINT or SIGTERM arrived.
+bool stop_requested();
+
+}  // namespace carom

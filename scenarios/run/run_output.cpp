@@ -1,0 +1,488 @@
+#include "scenarios/run/run_output.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include "carom/version.hpp"
+#include "core/hdf5.hpp"
+#include "fluid/drag.hpp"
+#include "scenarios/run/output_support.hpp"
+
+namespace carom {
+
+
+using namespace output_detail;
+
+namespace {
+/// Shape of a gas field: (nz, ny, nx) or (nz, ny, nx, components) (x varies fastest).
+std::vector<hsize_t> gas_shape(const std::array<int, 3>& cells, hsize_t components) {
+  std::vector<hsize_t> shape{hsize_t(cells[2]), hsize_t(cells[1]), hsize_t(cells[0])};
+  if (components > 0) shape.push_back(components);
+  return shape;
+}
+
+// ---- time series ------------------------------------------------------------------------------
+
+/// Columns of each time series (0: a 1-D series); uint64 series are listed separately.
+struct SeriesLayout {
+  std::vector<std::pair<std::string, hsize_t>> doubles;
+  std::vector<std::pair<std::string, hsize_t>> counters;
+};
+
+/// Time series of a run with a gas: pressure drop over the domain (Pa; mean pressure at the
+/// bottom face of the gas grid minus that at the top face, GasCoupling::pressure_drop),
+/// superficial inlet velocity of each side that is an inlet (m/s, one column per side, 0
+/// elsewhere), total drag on the particles (N), net rate of z-momentum the gas brings in through
+/// the bottom and top per unit area (Pa, GasCoupling::momentum_inflow).
+const std::vector<std::pair<std::string, hsize_t>> kGasSeries = {{"gas_pressure_drop", 0},
+                                                                 {"gas_inlet_velocity", 6},
+                                                                 {"gas_drag_force", 3},
+                                                                 {"gas_momentum_inflow", 0}};
+
+SeriesLayout series_layout(std::size_t species, std::size_t walls) {
+  SeriesLayout layout;
+  layout.doubles = {{"time", 0},
+                    {"kinetic_translational", 0},
+                    {"kinetic_rotational", 0},
+                    {"potential", 0},
+                    {"dissipated", 0},
+                    {"total_energy", 0},
+                    {"event_rate", 0},
+                    {"collision_rate", 0},
+                    {"virial", 9},
+                    {"kinetic_stress", 9},
+                    {"pressure_tensor", 9},
+                    {"pressure", 0}};
+  layout.counters = {{"events", 0}, {"collisions", 0}, {"pair_collisions", species * species}};
+  layout.doubles.emplace_back("pair_impulse", species * species);
+  if (walls > 0) {
+    layout.counters.emplace_back("wall_collisions", species * walls);
+    layout.doubles.emplace_back("wall_impulse", walls * 3);
+  }
+  return layout;
+}
+
+/// sum_i m_i v_i v_i^T at the simulator's current time, J.
+Eigen::Matrix3d kinetic_tensor(const Simulator& sim) {
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  const ParticleStore& p = sim.system().particles;
+  for (std::size_t i = 0; i < sim.particle_count(); ++i) {
+    const Vec3 v = sim.velocity(i);
+    sum += p.mass[i] * v * v.transpose();
+  }
+  return sum;
+}
+
+}  // namespace
+
+// ---- RunFile ----------------------------------------------------------------------------------
+
+struct RunFile::Impl {
+  explicit Impl(h5::File opened) : file(std::move(opened)) {}
+
+  h5::File file;
+  std::string path;
+  std::size_t species_count = 0;
+  std::size_t wall_count = 0;
+  double volume = 0;  ///< Box volume, m^3 (the pressure tensor's normalisation).
+  bool has_gas = false;
+  std::array<int, 3> gas_cells{0, 0, 0};
+  Vec3 gas_lower = Vec3::Zero(), gas_spacing = Vec3::Zero();
+
+  struct SnapshotEntry {
+    std::string name;
+    double time;
+    std::size_t count;
+  };
+  std::vector<SnapshotEntry> snapshots;
+
+  // The previous sample, for the averages over the sample interval.
+  double previous_time = 0;
+  std::uint64_t previous_events = 0;
+  std::uint64_t previous_collisions = 0;
+  Eigen::Matrix3d previous_virial = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d previous_kinetic_stress = Eigen::Matrix3d::Zero();
+  bool has_previous = false;
+
+  void write_xdmf() const;
+  void recover_previous_sample();
+  void drop_samples_from(double time);
+  void drop_snapshots_from(double time);
+};
+
+RunFile::RunFile(const std::string& path, const RunInfo& info, const System& system,
+                 const GasCoupling* gas)
+    : impl_(std::make_unique<Impl>(h5::File::create(path))) {
+  Impl& d = *impl_;
+  d.path = path;
+  d.species_count = system.species.size();
+  d.wall_count = system.walls.size();
+  d.volume = system.domain.volume();
+  write_info(d.file, info, kRunKind);
+
+  const h5::Group domain = d.file.create_group("domain");
+  domain.write<double>("lower",
+                       {system.domain.lower.x(), system.domain.lower.y(), system.domain.lower.z()});
+  domain.write<double>("upper",
+                       {system.domain.upper.x(), system.domain.upper.y(), system.domain.upper.z()});
+  domain.write<std::int32_t>("periodic", {system.domain.periodic[0], system.domain.periodic[1],
+                                          system.domain.periodic[2]});
+  domain.write<double>(
+      "gravity", {system.flight.gravity.x(), system.flight.gravity.y(), system.flight.gravity.z()});
+  domain.set_attribute("volume", d.volume);
+
+  const h5::Group species = d.file.create_group("species");
+  std::vector<std::string> names;
+  std::vector<double> diameter, density, mass;
+  std::vector<std::uint64_t> count(system.species.size(), 0);
+  for (const Species& s : system.species) {
+    names.push_back(s.name);
+    diameter.push_back(s.diameter);
+    density.push_back(s.density);
+    mass.push_back(s.mass());
+  }
+  for (std::uint32_t s : system.particles.species) ++count.at(s);
+  species.write_strings("name", names);
+  species.write("diameter", diameter);
+  species.write("density", density);
+  species.write("mass", mass);
+  species.write("count", count);
+
+  const h5::Group walls = d.file.create_group("walls");
+  std::vector<std::string> wall_names;
+  for (const Wall& w : system.walls) wall_names.push_back(w.name);
+  walls.write_strings("name", wall_names);
+
+  d.file.create_group("snapshots");
+  const h5::Group series = d.file.create_group("timeseries");
+  const SeriesLayout layout = series_layout(d.species_count, d.wall_count);
+  for (const auto& [name, columns] : layout.doubles)
+    series.create_extendible<double>(name, columns);
+  for (const auto& [name, columns] : layout.counters)
+    series.create_extendible<std::uint64_t>(name, columns);
+  if (gas != nullptr) {
+    d.has_gas = true;
+    d.gas_cells = gas->cells();
+    d.gas_lower = gas->grid_lower();
+    d.gas_spacing = gas->cell_size();
+    const h5::Group group = d.file.create_group("gas");
+    group.write<std::int32_t>("cells", {d.gas_cells[0], d.gas_cells[1], d.gas_cells[2]});
+    group.write<double>("lower", {d.gas_lower.x(), d.gas_lower.y(), d.gas_lower.z()});
+    group.write<double>("spacing", {d.gas_spacing.x(), d.gas_spacing.y(), d.gas_spacing.z()});
+    group.write("open_volume", gas->open_volume(), gas_shape(d.gas_cells, 0));
+    group.write_string("closure", gas->settings().closure);
+    group.set_attribute("density", gas->settings().density);
+    group.set_attribute("viscosity", gas->settings().viscosity);
+    group.set_attribute("time_step", gas->settings().time_step);
+    // Minimum fluidization of the first species: the closure's own prediction for a bed at
+    // eps_mf = 0.4 and the Wen-Yu correlation (superficial velocities, m/s).
+    if (!system.species.empty() && system.flight.has_gravity()) {
+      const Species& s = system.species[0];
+      const double g = system.flight.gravity.norm();
+      DragInput in;
+      in.diameter = in.sauter_diameter = s.diameter;
+      in.gas_density = gas->settings().density;
+      in.gas_viscosity = gas->settings().viscosity;
+      in.particle_density = s.density;
+      const DragClosure closure(gas->settings().closure, gas->settings().fluidization_porosity, g);
+      group.set_attribute("closure_minimum_fluidization", closure.minimum_fluidization_velocity(in, 0.4));
+      group.set_attribute("wen_yu_minimum_fluidization", wen_yu_minimum_fluidization_velocity(in, g));
+    }
+    for (const auto& [name, columns] : kGasSeries) series.create_extendible<double>(name, columns);
+  }
+  d.file.flush();
+  d.write_xdmf();
+}
+
+std::unique_ptr<RunFile> RunFile::append(const std::string& path) {
+  std::unique_ptr<RunFile> run(new RunFile());
+  run->impl_ = std::make_unique<Impl>(h5::File::open(path, true));
+  Impl& d = *run->impl_;
+  read_info(d.file, kRunKind);
+  d.path = path;
+  d.species_count = d.file.open_group("species").open_dataset("diameter").size();
+  d.wall_count = d.file.open_group("walls").open_dataset("name").size();
+  d.volume = d.file.open_group("domain").attribute<double>("volume");
+  if (d.file.contains("gas")) {
+    const h5::Group gas = d.file.open_group("gas");
+    const auto cells = gas.read<std::int32_t>("cells", {3});
+    const auto lower = gas.read<double>("lower", {3});
+    const auto spacing = gas.read<double>("spacing", {3});
+    d.has_gas = true;
+    d.gas_cells = {cells[0], cells[1], cells[2]};
+    d.gas_lower = Vec3(lower[0], lower[1], lower[2]);
+    d.gas_spacing = Vec3(spacing[0], spacing[1], spacing[2]);
+  }
+  const h5::Group snapshots = d.file.open_group("snapshots");
+  for (const std::string& name : snapshots.children()) {
+    const h5::Group snapshot = snapshots.open_group(name);
+    d.snapshots.push_back(
+        {name, snapshot.attribute<double>("time"), snapshot.open_dataset("radius").size()});
+  }
+  d.recover_previous_sample();
+  return run;
+}
+
+RunFile::RunFile() = default;
+RunFile::~RunFile() = default;
+
+const std::string& RunFile::path() const {
+  return impl_->path;
+}
+
+void RunFile::Impl::recover_previous_sample() {
+  const h5::Group series = file.open_group("timeseries");
+  const std::vector<double> times = series.read<double>("time");
+  if (times.empty()) return;
+  const std::size_t last = times.size() - 1;
+  auto last_row = [&](const std::vector<double>& values) {
+    return std::vector<double>(values.end() - 9, values.end());
+  };
+  previous_time = times[last];
+  previous_events = series.read<std::uint64_t>("events")[last];
+  previous_collisions = series.read<std::uint64_t>("collisions")[last];
+  previous_virial = from_row_major(last_row(series.read<double>("virial")));
+  previous_kinetic_stress = from_row_major(last_row(series.read<double>("kinetic_stress")));
+  has_previous = true;
+}
+
+// A run resumed from a checkpoint older than its last outputs writes them again (bit for bit the
+// same, the run being deterministic): the rows and snapshots from then on are dropped first.
+void RunFile::Impl::drop_samples_from(double time) {
+  const h5::Group series = file.open_group("timeseries");
+  const std::vector<double> times = series.read<double>("time");
+  const auto keep =
+      static_cast<hsize_t>(std::lower_bound(times.begin(), times.end(), time) - times.begin());
+  for (const std::string& name : series.children()) series.open_dataset(name).truncate(keep);
+  has_previous = false;
+  previous_time = 0;
+  previous_events = previous_collisions = 0;
+  previous_virial = previous_kinetic_stress = Eigen::Matrix3d::Zero();
+  recover_previous_sample();
+}
+
+void RunFile::Impl::drop_snapshots_from(double time) {
+  const h5::Group group = file.open_group("snapshots");
+  while (!snapshots.empty() && snapshots.back().time >= time) {
+    group.remove(snapshots.back().name);
+    snapshots.pop_back();
+  }
+}
+
+void RunFile::write_snapshot(const Simulator& sim, const GasCoupling* gas) {
+  Impl& d = *impl_;
+  if (!d.snapshots.empty() && d.snapshots.back().time >= sim.time())
+    d.drop_snapshots_from(sim.time());
+  const ParticleStore& p = sim.system().particles;
+  const std::size_t n = sim.particle_count();
+  // Rows in the order of the particle ids, so that row k is the same particle in every snapshot.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.id[a] < p.id[b]; });
+
+  std::vector<Vec3> position(n), velocity(n), spin(n);
+  std::vector<double> radius(n);
+  std::vector<std::int32_t> species(n);
+  std::vector<std::int64_t> id(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    position[k] = sim.position(i);
+    velocity[k] = sim.velocity(i);
+    spin[k] = sim.spin(i);
+    radius[k] = p.radius[i];
+    species[k] = static_cast<std::int32_t>(p.species[i]);
+    id[k] = static_cast<std::int64_t>(p.id[i]);
+  }
+  const std::string name = snapshot_name(d.snapshots.size());
+  const h5::Group snapshot = d.file.open_group("snapshots").create_group(name);
+  snapshot.set_attribute("time", sim.time());
+  snapshot.write("position", flatten(position), {n, 3});
+  snapshot.write("velocity", flatten(velocity), {n, 3});
+  snapshot.write("spin", flatten(spin), {n, 3});
+  snapshot.write("radius", radius);
+  snapshot.write("species", species);
+  snapshot.write("id", id);
+  if (gas != nullptr && d.has_gas) {
+    const h5::Group fields = snapshot.create_group("gas");
+    fields.write("porosity", gas->porosity(), gas_shape(d.gas_cells, 0));
+    fields.write("pressure", gas->pressure_field(), gas_shape(d.gas_cells, 0));
+    fields.write("velocity", flatten(gas->velocity_field()), gas_shape(d.gas_cells, 3));
+  }
+  d.snapshots.push_back({name, sim.time(), n});
+  d.file.flush();
+  d.write_xdmf();
+}
+
+void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas, const SeriesRow& extra) {
+  Impl& d = *impl_;
+  const double time = sim.time();
+  if (d.has_previous && d.previous_time >= time) d.drop_samples_from(time);
+  const Energies energy = sim.energies();
+  const RunStatistics& stats = sim.statistics();
+  const Eigen::Matrix3d kinetic_stress = kinetic_tensor(sim) / d.volume;
+
+  // Averages over the interval since the previous sample: the collisional stress from the
+  // virial booked in it, the kinetic stress by the trapezoidal rule on its two ends.
+  const double interval = time - d.previous_time;
+  const Eigen::Matrix3d collisional_stress =
+      interval > 0.0 ? Eigen::Matrix3d((stats.virial - d.previous_virial) / (d.volume * interval))
+                     : Eigen::Matrix3d::Zero();
+  const Eigen::Matrix3d mean_kinetic_stress =
+      d.has_previous ? Eigen::Matrix3d(0.5 * (kinetic_stress + d.previous_kinetic_stress))
+                     : kinetic_stress;
+  const Eigen::Matrix3d pressure_tensor = mean_kinetic_stress + collisional_stress;
+  auto rate = [&](std::uint64_t now, std::uint64_t before) {
+    return interval > 0.0 ? static_cast<double>(now - before) / interval : 0.0;
+  };
+
+  const h5::Group series = d.file.open_group("timeseries");
+  auto put = [&](const char* name, const auto& values) {
+    series.open_dataset(name).append(values);
+  };
+  put("time", std::vector<double>{time});
+  put("kinetic_translational", std::vector<double>{energy.translational});
+  put("kinetic_rotational", std::vector<double>{energy.rotational});
+  put("potential", std::vector<double>{energy.potential});
+  put("dissipated", std::vector<double>{energy.dissipated});
+  put("total_energy", std::vector<double>{energy.total()});
+  put("event_rate", std::vector<double>{rate(stats.events, d.previous_events)});
+  put("collision_rate", std::vector<double>{rate(stats.collisions(), d.previous_collisions)});
+  put("virial", row_major(stats.virial));
+  put("kinetic_stress", row_major(kinetic_stress));
+  put("pressure_tensor", row_major(pressure_tensor));
+  put("pressure", std::vector<double>{pressure_tensor.trace() / 3.0});
+  put("events", std::vector<std::uint64_t>{stats.events});
+  put("collisions", std::vector<std::uint64_t>{stats.collisions()});
+  put("pair_collisions", stats.pair_collisions);
+  put("pair_impulse", stats.pair_impulse);
+  if (d.wall_count > 0) {
+    put("wall_collisions", stats.wall_collisions);
+    put("wall_impulse",
+        flatten(std::vector<Vec3>(stats.wall_impulse.begin(), stats.wall_impulse.end())));
+  }
+  if (d.has_gas) {
+    std::vector<double> inlet(6, 0.0);
+    double drop = 0.0, momentum_inflow = 0.0;
+    Vec3 drag = Vec3::Zero();
+    if (gas != nullptr) {
+      for (int s = 0; s < 6; ++s) inlet[s] = gas->inlet_velocity(s, time);
+      drop = gas->pressure_drop();
+      drag = gas->total_drag();
+      momentum_inflow = gas->momentum_inflow();
+    }
+    put("gas_pressure_drop", std::vector<double>{drop});
+    put("gas_inlet_velocity", inlet);
+    put("gas_drag_force", std::vector<double>{drag.x(), drag.y(), drag.z()});
+    put("gas_momentum_inflow", std::vector<double>{momentum_inflow});
+  }
+  for (const SeriesColumn& column : extra) {
+    if (!series.contains(column.name)) {
+      // A series that starts late would not line up with time: only at the first row.
+      if (series.open_dataset("time").size() > 1)
+        throw std::logic_error("run file: series " + column.name + " added after the first row");
+      series.create_extendible<double>(column.name, column.columns);
+    }
+    put(column.name.c_str(), column.values);
+  }
+  d.file.flush();
+
+  d.previous_time = time;
+  d.previous_events = stats.events;
+  d.previous_collisions = stats.collisions();
+  d.previous_virial = stats.virial;
+  d.previous_kinetic_stress = kinetic_stress;
+  d.has_previous = true;
+}
+
+void RunFile::Impl::write_xdmf() const {
+  const std::string data_file = base_name(path);
+  std::ostringstream xml;
+  xml.precision(17);
+  xml << "<?xml version=\"1.0\" ?>\n"
+      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const SnapshotEntry& s : snapshots) {
+    const std::string where = data_file + ":/snapshots/" + s.name + "/";
+    auto item = [&](const std::string& dataset, bool vector, const char* type, int precision) {
+      xml << "          <DataItem Dimensions=\"" << s.count << (vector ? " 3" : "")
+          << "\" NumberType=\"" << type << "\" Precision=\"" << precision << "\" Format=\"HDF\">"
+          << where << dataset << "</DataItem>\n";
+    };
+    auto attribute = [&](const std::string& dataset, bool vector, const char* type, int precision) {
+      xml << "        <Attribute Name=\"" << dataset << "\" AttributeType=\""
+          << (vector ? "Vector" : "Scalar") << "\" Center=\"Node\">\n";
+      item(dataset, vector, type, precision);
+      xml << "        </Attribute>\n";
+    };
+    xml << "      <Grid Name=\"snapshot_" << s.name << "\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << s.time << "\"/>\n"
+        << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << s.count
+        << "\" NodesPerElement=\"1\"/>\n"
+        << "        <Geometry GeometryType=\"XYZ\">\n";
+    item("position", true, "Float", 8);
+    xml << "        </Geometry>\n";
+    attribute("radius", false, "Float", 8);
+    attribute("velocity", true, "Float", 8);
+    attribute("spin", true, "Float", 8);
+    attribute("species", false, "Int", 4);
+    attribute("id", false, "Int", 8);
+    xml << "      </Grid>\n";
+  }
+  xml << "    </Grid>\n";
+  if (has_gas) {
+    // The gas: cell-centred fields on a uniform grid (nodes = cells + 1 per axis, z y x order).
+    const std::string dims = std::to_string(gas_cells[2]) + " " + std::to_string(gas_cells[1]) +
+                             " " + std::to_string(gas_cells[0]);
+    const std::string nodes = std::to_string(gas_cells[2] + 1) + " " +
+                              std::to_string(gas_cells[1] + 1) + " " + std::to_string(gas_cells[0] + 1);
+    xml << "    <Grid Name=\"gas\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const SnapshotEntry& s : snapshots) {
+      const std::string where = data_file + ":/snapshots/" + s.name + "/gas/";
+      xml << "      <Grid Name=\"gas_" << s.name << "\" GridType=\"Uniform\">\n"
+          << "        <Time Value=\"" << s.time << "\"/>\n"
+          << "        <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
+          << "        <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+          << "          <DataItem Dimensions=\"3\" Format=\"XML\">" << gas_lower.z() << " "
+          << gas_lower.y() << " " << gas_lower.x() << "</DataItem>\n"
+          << "          <DataItem Dimensions=\"3\" Format=\"XML\">" << gas_spacing.z() << " "
+          << gas_spacing.y() << " " << gas_spacing.x() << "</DataItem>\n"
+          << "        </Geometry>\n";
+      for (const char* field : {"porosity", "pressure", "velocity"}) {
+        const bool vector = std::string(field) == "velocity";
+        xml << "        <Attribute Name=\"" << field << "\" AttributeType=\""
+            << (vector ? "Vector" : "Scalar") << "\" Center=\"Cell\">\n"
+            << "          <DataItem Dimensions=\"" << dims << (vector ? " 3" : "")
+            << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << where << field
+            << "</DataItem>\n        </Attribute>\n";
+      }
+      xml << "      </Grid>\n";
+    }
+    xml << "    </Grid>\n";
+  }
+  xml << "  </Domain>\n</Xdmf>\n";
+
+  // Written aside and renamed, so that a viewer never reads half a file.
+  const std::string sidecar = xdmf_path_of(path);
+  const std::string temporary = sidecar + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    out << xml.str();
+    if (!out.flush()) throw std::runtime_error(temporary + ": cannot write the XDMF sidecar");
+  }
+  if (std::rename(temporary.c_str(), sidecar.c_str()) != 0)
+    throw std::runtime_error(sidecar +
+                             ": cannot replace the XDMF sidecar: " + std::strerror(errno));
+}
+
+}  // namespace carom

@@ -1,0 +1,95 @@
+#pragma once
+/// The HDF5 file of one run (plus its XDMF sidecar) and checkpoints.
+///
+/// Layout of a run file (all SI; tensors are 9 values row by row: xx xy xz yx ... zz):
+///   /                    attributes: kind = "carom run", carom_version, seed, scene_name
+///   /scene               string: the scene file text as run (after --set overrides)
+///   /domain/             lower (3), upper (3), periodic (3, 0/1), gravity (3); attribute volume
+///   /species/            name, diameter, density, mass, count (S each; count at creation)
+///   /walls/name          names of the walls (W; collision counters refer to them by index)
+///   /snapshots/NNNNNN/   one group per snapshot, attribute time (s), rows in id order:
+///                        position, velocity, spin (N x 3), radius (N), species (N, int32),
+///                        id (N, int64)
+///   /timeseries/         extendible datasets, one row per sample:
+///     time; kinetic_translational, kinetic_rotational, potential, dissipated, total_energy (J);
+///     events, collisions (uint64, cumulative); event_rate, collision_rate (1/s over the
+///     interval since the previous sample); virial (x9, cumulative sum r_ij (x) J_i, J s);
+///     kinetic_stress (x9, sum m v v / V at the sample, Pa); pressure_tensor (x9, Pa: the
+///     kinetic stress averaged over the interval by the trapezoidal rule plus the virial booked
+///     in the interval / (V dt)); pressure (trace / 3, Pa); pair_collisions (x S*S, uint64,
+///     cumulative, symmetric); pair_impulse (x S*S, cumulative sum of |J| over the collisions
+///     of each species pair, N s, symmetric); and when there are walls wall_collisions (x S*W, uint64,
+///     cumulative) and wall_impulse (x W*3, cumulative, N s). V is the box volume.
+///   /analysis/          (runs with an analysis) id, tagged, start_height (by particle id),
+///                        mixing_grid/ and field_grid/ (lower, upper, cells); the analysis
+///                        series (run_analysis.hpp) are in /timeseries beside the others
+/// The XDMF sidecar (same name, .xmf instead of .h5) lists the snapshots as a temporal
+/// collection of Polyvertex grids with radius, velocity, spin, species and id as point data;
+/// it is rewritten (atomically) after every snapshot.
+///
+/// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
+/// scene_name; /scene; /state (attributes time, last_particle_event, stall_window) with
+/// particles/ (every ParticleStore array, in the simulator's internal order), cells (N x 3),
+/// events/ and crossings/ (each: time, partner, partner_counter, kind), statistics/ (counters as
+/// attributes; pair_collisions, wall_collisions, wall_impulse (W x 3), virial (3 x 3)),
+/// stall_window_start, stall_count, actions/ (name, next_time). Doubles are stored as native
+/// doubles: bit for bit.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "events/simulator.hpp"
+#include "fluid/coupling.hpp"
+#include "scenarios/analysis/run_analysis.hpp"
+
+namespace carom {
+
+/// What identifies a run in its outputs.
+struct RunInfo {
+  std::string scene_text;  ///< The scene file text (after overrides).
+  std::string scene_name;  ///< [meta] name.
+  std::uint64_t seed = 0;  ///< Random seed.
+};
+
+/// Writes one run's HDF5 file. Opening creates (truncates) the file; every write is flushed so
+/// that a crash leaves a readable file with everything written so far.
+class RunFile {
+ public:
+  /// `gas`: the run's gas (nullptr without one): its grid goes into /gas.
+  RunFile(const std::string& path, const RunInfo& info, const System& system, const GasCoupling* gas = nullptr);
+  /// Reopens an existing run file to append (used by `carom resume`). When the run resumes from
+  /// a checkpoint older than the file's last outputs, the first snapshot / sample written drops
+  /// those at or after its time, so the file ends as the uninterrupted run's would.
+  static std::unique_ptr<RunFile> append(const std::string& path);
+  ~RunFile();
+  RunFile(const RunFile&) = delete;
+  RunFile& operator=(const RunFile&) = delete;
+
+  /// Adds a snapshot of every particle at sim.time() and rewrites the XDMF sidecar.
+  void write_snapshot(const Simulator& sim, const GasCoupling* gas = nullptr);
+  /// Appends one row of every time series at sim.time(); rates and the pressure tensor are
+  /// averages over the interval since the previous row (since t = 0 for the first). `extra`:
+  /// further series of this row (the run's analysis), created at their first row.
+  void append_sample(const Simulator& sim, const GasCoupling* gas = nullptr, const SeriesRow& extra = {});
+  const std::string& path() const;
+
+ private:
+  RunFile();
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Writes a checkpoint atomically (to a temporary file, then renamed over `path`), so a crash
+/// while writing never destroys the previous checkpoint.
+void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info,
+                      const GasCoupling* gas = nullptr);
+
+/// A checkpoint read back.
+struct Checkpoint {
+  RunInfo info;
+  EngineState state;
+  std::vector<double> gas_state;  ///< GasCoupling::save(); empty without a gas.
+};
+Checkpoint read_checkpoint(const std::string& path);
+
+}  // namespace carom

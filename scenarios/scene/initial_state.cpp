@@ -1,0 +1,142 @@
+// Building a scene's particles: listed ones, those read from a file, then each species' fill,
+// then velocities; then, optionally, a settling run.
+#include <cmath>
+
+#include "scenarios/scene/initial_file.hpp"
+#include "scenarios/scene/placement.hpp"
+#include "scenarios/scene/scene.hpp"
+#include "scenarios/scene/settling.hpp"
+
+namespace carom {
+
+std::vector<std::size_t> fill_counts(const Scene& scene) {
+  const auto& species = scene.system.species;
+  std::vector<std::size_t> counts(species.size(), 0);
+  double fixed_mass = 0.0, fraction_sum = 0.0;
+  for (const ListedParticle& p : scene.listed) fixed_mass += species[p.species].mass();
+  for (std::size_t s = 0; s < species.size(); ++s) {
+    const auto& fill = scene.fills[s];
+    if (!fill) continue;
+    if (fill->amount == Fill::Amount::Count) {
+      counts[s] = static_cast<std::size_t>(fill->value);
+    } else if (fill->amount == Fill::Amount::VolumeFraction) {
+      const double volume = scene.regions[fill->region].volume();
+      counts[s] = static_cast<std::size_t>(std::llround(fill->value * volume / species[s].volume()));
+      if (counts[s] == 0 && fill->value > 0.0)
+        throw SceneError(fill->where + ": species \"" + species[s].name + "\": volume_fraction " +
+                         format_number(fill->value) + " of region \"" + scene.regions[fill->region].name +
+                         "\" is less than one particle");
+    } else {
+      fraction_sum += fill->value;
+      continue;
+    }
+    fixed_mass += static_cast<double>(counts[s]) * species[s].mass();
+  }
+  if (fraction_sum == 0.0) return counts;
+  if (fraction_sum >= 1.0 || fixed_mass <= 0.0) {
+    std::string where;
+    for (std::size_t s = 0; s < species.size(); ++s)
+      if (scene.fills[s] && scene.fills[s]->amount == Fill::Amount::MassFraction) where = scene.fills[s]->where;
+    throw SceneError(where + ": mass fractions add up to " + format_number(fraction_sum) +
+                     (fixed_mass <= 0.0 ? " and no species is given by count or volume_fraction"
+                                        : ", which leaves nothing for the other species") +
+                     ": a mass fraction is of all solids, so at least one species must be given by count or "
+                     "volume_fraction and the fractions must sum to less than 1");
+  }
+  const double total_mass = fixed_mass / (1.0 - fraction_sum);
+  for (std::size_t s = 0; s < species.size(); ++s) {
+    const auto& fill = scene.fills[s];
+    if (!fill || fill->amount != Fill::Amount::MassFraction) continue;
+    counts[s] = static_cast<std::size_t>(std::llround(fill->value * total_mass / species[s].mass()));
+    if (counts[s] == 0 && fill->value > 0.0)
+      throw SceneError(fill->where + ": species \"" + species[s].name + "\": mass_fraction " +
+                       format_number(fill->value) + " is less than one particle");
+  }
+  return counts;
+}
+
+namespace {
+/// Says where particles came from in a validation message: "[[particles]] entry at file:line"
+/// after each listed particle's id, "row k of initial.from_file" after each particle read from
+/// a file (ids [first_from_file, first_from_file + from_file)).
+std::string with_sources(const std::string& message, const Scene& scene, std::size_t first_from_file,
+                         std::size_t from_file) {
+  std::string out = message;
+  auto annotate = [&](std::size_t id, const std::string& source) {
+    const std::string tag = "particle " + std::to_string(id) + " (";
+    const std::size_t at = out.find(tag);
+    if (at != std::string::npos) out.insert(at + tag.size(), source + ", ");
+  };
+  for (std::size_t i = 0; i < scene.listed.size(); ++i) annotate(i, "[[particles]] entry at " + scene.listed[i].where);
+  for (std::size_t k = 0; k < from_file; ++k)
+    annotate(first_from_file + k, "row " + std::to_string(k) + " of initial.from_file (" + scene.from_file->where + ")");
+  return out;
+}
+}  // namespace
+
+void build_initial_state(Scene& scene) {
+  System& system = scene.system;
+  system.particles = ParticleStore{};
+  const std::vector<std::size_t> counts = fill_counts(scene);
+  std::vector<double> radii;
+  for (const ListedParticle& p : scene.listed) radii.push_back(system.species[p.species].radius());
+  std::vector<FileParticle> from_file;
+  if (scene.from_file) from_file = read_initial_file(scene);
+  for (const FileParticle& p : from_file) radii.push_back(system.species[p.species].radius());
+  for (std::size_t s = 0; s < counts.size(); ++s) radii.insert(radii.end(), counts[s], system.species[s].radius());
+
+  // Listed particles go in as written; validate_initial_state names any overlap.
+  for (const ListedParticle& p : scene.listed) system.add_particle(p.species, p.position, p.velocity, p.spin);
+  // Particles from a file keep their velocities and spins; fills are placed around them.
+  const std::size_t first_from_file = system.particles.size();
+  for (const FileParticle& p : from_file) system.add_particle(p.species, p.position, p.velocity, p.spin);
+  const std::size_t first_filled = system.particles.size();
+  if (first_filled < radii.size()) {
+    std::optional<Placer> placer;
+    try {
+      placer.emplace(system, radii);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(scene.file + ": domain: " + e.what());
+    }
+    Rng rng(scene.seed);
+    for (std::size_t s = 0; s < counts.size(); ++s) {
+      if (counts[s] == 0) continue;
+      const Fill& fill = *scene.fills[s];
+      const Region& region = scene.regions[fill.region];
+      const auto index = static_cast<std::uint32_t>(s);
+      const std::size_t placed =
+          fill.arrangement == Fill::Arrangement::Random
+              ? placer->random(index, counts[s], region.lower, region.upper, rng)
+              : placer->lattice(index, counts[s], region.lower, region.upper, fill.arrangement == Fill::Arrangement::Fcc);
+      if (placed < counts[s]) {
+        const double phi = static_cast<double>(counts[s]) * system.species[s].volume() / region.volume();
+        throw SceneError(
+            fill.where + ": species \"" + system.species[s].name + "\": placed only " + std::to_string(placed) + " of " +
+            std::to_string(counts[s]) + " particles in region \"" + region.name + "\" (this species alone fills " +
+            format_number(phi) + " of its volume, on top of what is already there). " +
+            (fill.arrangement == Fill::Arrangement::Random
+                 ? "Random insertion jams near a volume fraction of 0.3-0.38; use arrangement = \"fcc\" (up to 0.74), "
+                   "a larger region, or fewer particles."
+                 : "The region holds fewer lattice sites; use a larger region or fewer particles."));
+      }
+    }
+    set_maxwellian(system, first_filled, scene.temperature, scene.rms_velocity, rng);
+  }
+  // Placed and listed particles must not touch at all; a state read from a run may overlap by
+  // round-off, which the engine itself tolerates (kContactTolerance).
+  const double tolerance = from_file.empty() ? 0.0 : kContactTolerance;
+  try {
+    validate_initial_state(system, tolerance);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": initial state: " + with_sources(e.what(), scene, first_from_file, from_file.size()));
+  }
+  if (scene.settle_time <= 0.0) return;
+  settle(scene);
+  try {
+    validate_initial_state(system, kContactTolerance);
+  } catch (const std::invalid_argument& e) {  // an engine invariant broken: report it plainly
+    throw SceneError(scene.settle_where + ": initial.settle_time: the settled state is not valid: " + e.what());
+  }
+}
+
+}  // namespace carom

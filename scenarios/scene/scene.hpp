@@ -1,0 +1,135 @@
+#pragma once
+/// A scene file read, checked and turned into a System plus the settings of its run.
+///
+/// Reading happens in two steps so that `carom resume` can rebuild the box, walls, species and
+/// laws from the scene stored in a checkpoint without placing particles again:
+///   parse_scene(...)        everything but the particles (cheap, pure validation);
+///   build_initial_state()   places the particles and gives them velocities (may take a while).
+/// Both throw SceneError with a message naming the file, line, key, value and allowed range.
+/// SCENES.md documents every key.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/system.hpp"
+#include "events/simulator.hpp"
+#include "fluid/gas_settings.hpp"
+#include "scenarios/scene/scene_reader.hpp"
+
+namespace carom {
+
+/// A named box inside the domain where particles are placed.
+struct Region {
+  std::string name;
+  Vec3 lower = Vec3::Zero();  ///< m.
+  Vec3 upper = Vec3::Zero();  ///< m.
+  double volume() const { return (upper - lower).prod(); }
+};
+
+/// How one species is put into the domain at the start.
+struct Fill {
+  enum class Amount { Count, VolumeFraction, MassFraction };
+  enum class Arrangement { Random, Fcc, Cubic };
+  Amount amount = Amount::Count;
+  double value = 0;               ///< The count, the volume fraction of the region, or the mass fraction of all solids.
+  std::size_t region = 0;         ///< Index into Scene::regions.
+  Arrangement arrangement = Arrangement::Random;
+  std::string where;              ///< "file:line" of the fill, for messages.
+};
+
+/// A particle written out in the scene.
+struct ListedParticle {
+  std::uint32_t species = 0;
+  Vec3 position = Vec3::Zero();  ///< m.
+  Vec3 velocity = Vec3::Zero();  ///< m/s.
+  Vec3 spin = Vec3::Zero();      ///< rad/s.
+  std::string where;             ///< "file:line".
+};
+
+/// `[initial] from_file`: particles taken from a carom run file's snapshot or a checkpoint.
+struct InitialFile {
+  std::string path;            ///< As resolved (relative paths: relative to the scene file's folder).
+  std::string written;         ///< As written in the scene, for messages.
+  std::int64_t snapshot = -1;  ///< Run files: snapshot index, 0 first, -1 last, -2 the one before ...
+  bool snapshot_given = false; ///< A checkpoint has no snapshots: giving one is an error.
+  std::string where;           ///< "file:line" of from_file, for messages.
+};
+
+/// When outputs are written (s of simulated time); 0 means never (except at the end).
+struct OutputSchedule {
+  double snapshot_every = 0;
+  double sample_every = 0;
+  double checkpoint_every = 0;
+};
+
+/// [flight]: how particles move between events (DESIGN.md section 2).
+struct FlightSettings {
+  enum class Model { Ballistic, Relax, Kick };
+  Model model = Model::Ballistic;
+  double particle_step = 0;  ///< Kick: time between drag kicks dt_p, s.
+};
+
+/// [analysis]: what a run measures beyond the standard time series (SCENES.md, "Analysis").
+struct AnalysisSettings {
+  /// Mixing: the particles of this species are tagged by their height at t = 0 (lower and upper
+  /// half); -1: no mixing analysis.
+  std::int32_t mixing_species = -1;
+  std::array<int, 3> mixing_cells{4, 1, 4};  ///< Lacey sample cells per axis over mixing_region.
+  std::size_t mixing_region = 0;             ///< Index into Scene::regions (0: the whole domain).
+  std::size_t min_particles = 5;             ///< Sample cells with fewer tagged-species particles are skipped.
+  /// Cells per axis of the local fields (solid fraction, granular temperature, kinetic-theory
+  /// collision frequency) over the whole domain; {0, 0, 0}: cells of about 4 largest diameters.
+  std::array<int, 3> field_cells{0, 0, 0};
+};
+
+struct Scene {
+  std::string file;           ///< Name used in messages.
+  std::string text;           ///< Scene text as run (re-serialized when --set changed it).
+  std::string name;           ///< [meta] name.
+  std::string description;    ///< [meta] description.
+  System system;              ///< Box, walls, species, laws, gravity; particles after build_initial_state.
+  SimulatorOptions options;   ///< Collapse remedies, grid levels.
+  std::vector<Region> regions;              ///< [regions.*]; regions[0] is the whole domain ("domain").
+  std::vector<std::optional<Fill>> fills;   ///< Per species.
+  std::vector<ListedParticle> listed;       ///< [[particles]].
+  double temperature = 0;     ///< Granular temperature of filled particles, J (T = m <v_x^2>).
+  double rms_velocity = 0;    ///< Alternative: rms velocity of filled particles, m/s.
+  std::uint64_t seed = 1;     ///< Placement and velocity seed.
+  std::optional<InitialFile> from_file;  ///< Particles read from an HDF5 file, placed after the listed ones.
+  double settle_time = 0;     ///< Settling run before t = 0 (gravity, walls, laws, collapse settings), s; 0: none.
+  bool settle_zero_velocity = false;  ///< Zero velocities and spins after settling.
+  std::string settle_where;   ///< "file:line" of initial.settle_time, for messages.
+  FlightSettings flight;      ///< [flight].
+  GasSettings gas;            ///< [gas]; coupling None when absent.
+  double end_time = 0;        ///< s.
+  OutputSchedule output;
+  AnalysisSettings analysis;  ///< [analysis].
+};
+
+/// The index of the species named by the string at `key` (a SceneError naming the choices if
+/// none has that name); for the section readers.
+std::uint32_t species_index(TableReader& t, std::string_view key, const Scene& scene);
+/// The index into scene.regions of the region named at `key` ("domain" when absent).
+std::size_t region_index(TableReader& t, std::string_view key, const Scene& scene);
+
+/// Parses and validates a scene text. `overrides` are "key=value" assignments applied to the
+/// table first; `seed`, when given, replaces initial.seed. Throws SceneError.
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::vector<std::string>& overrides = {},
+                  std::optional<std::uint64_t> seed = std::nullopt);
+/// Reads the file and parses it (a missing or unreadable file is a SceneError too).
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
+                 std::optional<std::uint64_t> seed = std::nullopt);
+
+/// Places every particle (listed ones first, then those of initial.from_file, then the fills in
+/// species order), gives the filled ones their velocities, validates the result (no overlaps,
+/// nothing outside the walls) and, with initial.settle_time, runs the settling and takes its end
+/// state as the initial state at t = 0. Throws SceneError.
+void build_initial_state(Scene& scene);
+
+/// Number of particles each fill will create (mass fractions resolved), per species.
+std::vector<std::size_t> fill_counts(const Scene& scene);
+
+}  // namespace carom

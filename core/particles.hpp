@@ -10,18 +10,17 @@ namespace carom {
 /// Every particle's state. Positions and velocities are stored as of the particle's own
 /// clock ("delayed states"): a particle is advanced only when it takes part in an event.
 struct ParticleStore {
-  // Hot: read at every prediction.
+  // Hot: read at every prediction. (What a method keeps about its own bookkeeping, such as
+  // event counters or the time of the last collision, lives in the method, not here.)
   std::vector<Vec3> position;   ///< Centre r_i at time clock[i], m.
   std::vector<Vec3> velocity;   ///< Velocity v_i at time clock[i], m/s.
   std::vector<double> clock;    ///< t_i: the time the stored state refers to, s.
   std::vector<double> radius;   ///< a_i, m.
-  std::vector<std::uint32_t> event_counter;  ///< Bumped whenever the trajectory changes.
 
   // Warm: read at collisions.
   std::vector<Vec3> spin;       ///< Angular velocity w_i, rad/s (constant in free flight).
   std::vector<double> mass;     ///< m_i, kg.
   std::vector<double> inertia;  ///< I_i = (2/5) m_i a_i^2, kg m^2.
-  std::vector<double> last_collision;  ///< Time of the particle's last collision, s (TC model).
 
   // Cold.
   std::vector<std::uint32_t> species;  ///< Index into the species list.
@@ -36,11 +35,9 @@ struct ParticleStore {
     velocity.push_back(v);
     clock.push_back(time);
     radius.push_back(a);
-    event_counter.push_back(0);
     spin.push_back(w);
     mass.push_back(m);
     inertia.push_back(inertia_value);
-    last_collision.push_back(-kNever);
     species.push_back(species_index);
     id.push_back(particle_id);
   }
@@ -48,8 +45,8 @@ struct ParticleStore {
   /// Removes the last particle.
   void pop_back() {
     position.pop_back(); velocity.pop_back(); clock.pop_back(); radius.pop_back();
-    event_counter.pop_back(); spin.pop_back(); mass.pop_back(); inertia.pop_back();
-    last_collision.pop_back(); species.pop_back(); id.pop_back();
+    spin.pop_back(); mass.pop_back(); inertia.pop_back();
+    species.pop_back(); id.pop_back();
   }
 
   /// Reorders every array so that new particle k is old particle order[k].
@@ -62,11 +59,9 @@ struct ParticleStore {
     apply(velocity);
     apply(clock);
     apply(radius);
-    apply(event_counter);
     apply(spin);
     apply(mass);
     apply(inertia);
-    apply(last_collision);
     apply(species);
     apply(id);
   }

@@ -1,11 +1,11 @@
-// The event calendar (events/calendar.hpp) against a brute-force oracle: a linear scan of all
+// The event calendar (events/event_driven/calendar.hpp) against a brute-force oracle: a linear scan of all
 // slots for the smallest (time, slot).
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "core/rng.hpp"
-#include "events/calendar.hpp"
+#include "events/event_driven/calendar.hpp"
 
 namespace carom {
 namespace {

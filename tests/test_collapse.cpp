@@ -50,9 +50,9 @@ System settling_column() {
 // (its height above the floor at most g t_c^2 / 8 ~ 1e-6 m plus the last real bounce).
 TEST(Collapse, BouncingBallFinishesWithTcModel) {
   test::expect_finishes(10, [] {
-                SimulatorOptions options;
+                EventDrivenOptions options;
                 options.collapse.contact_time = 1e-3;
-                Simulator sim(bouncing_ball(), options);
+                EventDrivenEngine sim(bouncing_ball(), options);
                 EXPECT_NO_THROW(sim.run_until(6.0));
                 EXPECT_EQ(sim.time(), 6.0);
                 EXPECT_LT(sim.position(0).z() - 0.5, 1e-3) << "the ball must have come to (practical) rest";
@@ -69,7 +69,7 @@ TEST(Collapse, BallTouchingTheCeilingFallsAway) {
   test::expect_finishes(5, [] {
     System system = bouncing_ball();
     system.particles.position[0].z() = 1.4;  // centre at 1.9 - 0.5: touching z_high
-    Simulator sim(system, SimulatorOptions{});
+    EventDrivenEngine sim(system, EventDrivenOptions{});
     EXPECT_NO_THROW(sim.run_until(0.42));
     EXPECT_EQ(sim.statistics().wall_events, 0u) << "no contact while falling away from the ceiling";
     EXPECT_NEAR(sim.position(0).z(), 1.4 - 0.5 * 9.81 * 0.42 * 0.42, 1e-12);
@@ -79,7 +79,7 @@ TEST(Collapse, BallTouchingTheCeilingFallsAway) {
 // Without it the stall detector must throw, naming the particle (id 0) and the TC model.
 TEST(Collapse, BouncingBallWithoutTcModelThrowsDiagnostic) {
   test::expect_finishes(10, [] {
-                Simulator sim(bouncing_ball(), SimulatorOptions{});
+                EventDrivenEngine sim(bouncing_ball(), EventDrivenOptions{});
                 try {
                   sim.run_until(6.0);
                   ADD_FAILURE() << "no InelasticCollapse: the run went through the collapse";
@@ -96,10 +96,10 @@ TEST(Collapse, BouncingBallWithoutTcModelThrowsDiagnostic) {
 
 TEST(Collapse, SettlingColumnFinishesWithTcModel) {
   test::expect_finishes(20, [] {
-                SimulatorOptions options;
+                EventDrivenOptions options;
                 options.collapse.contact_time = 1e-3;
                 options.check_invariants = true;
-                Simulator sim(settling_column(), options);
+                EventDrivenEngine sim(settling_column(), options);
                 EXPECT_NO_THROW(sim.run_until(2.0));
                 EXPECT_EQ(sim.time(), 2.0);
                 EXPECT_LT(test::max_relative_overlap(sim), 1e-10);
@@ -109,7 +109,7 @@ TEST(Collapse, SettlingColumnFinishesWithTcModel) {
 
 TEST(Collapse, SettlingColumnWithoutTcModelThrowsDiagnostic) {
   test::expect_finishes(20, [] {
-                Simulator sim(settling_column(), SimulatorOptions{});
+                EventDrivenEngine sim(settling_column(), EventDrivenOptions{});
                 try {
                   sim.run_until(5.0);
                   ADD_FAILURE() << "no InelasticCollapse in a settling column without the TC model";

@@ -37,7 +37,7 @@
 #include <vector>
 
 #include "core/rng.hpp"
-#include "events/simulator.hpp"
+#include "events/event_driven/engine.hpp"
 #include "scenarios/analysis/run_analysis.hpp"
 #include "scenarios/scene/scene.hpp"
 
@@ -250,8 +250,8 @@ TEST_P(CollisionCount, StatisticsAndSummaryMatchBruteForce) {
   ASSERT_EQ(system.species.size(), std::size_t(kSpecies));
   ASSERT_EQ(system.walls.size(), std::size_t(kWalls));
   ASSERT_FALSE(system.flight.has_gravity());
-  EXPECT_EQ(scene.options.collapse.contact_time, 0.0);
-  EXPECT_EQ(scene.options.collapse.elastic_below_speed, 0.0);
+  EXPECT_EQ(scene.method.event_driven.collapse.contact_time, 0.0);
+  EXPECT_EQ(scene.method.event_driven.collapse.elastic_below_speed, 0.0);
   std::array<int, kWalls> carom_wall{};  // oracle wall -> carom wall index
   for (int w = 0; w < kWalls; ++w) {
     carom_wall[w] = -1;
@@ -288,9 +288,9 @@ TEST_P(CollisionCount, StatisticsAndSummaryMatchBruteForce) {
   BruteForceGas oracle(balls, system.domain.lower, system.domain.upper, c.restitution);
   oracle.run_until(end_time);
 
-  SimulatorOptions options = scene.options;
+  EventDrivenOptions options = scene.method.event_driven;
   options.check_invariants = true;  // no overlap, momentum balance at every collision
-  Simulator sim(scene.system, options);
+  EventDrivenEngine sim(scene.system, options);
   const RunAnalysis analysis(scene, sim);
   ASSERT_TRUE(sim.run_until(end_time));
   ASSERT_EQ(sim.time(), end_time);

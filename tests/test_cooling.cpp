@@ -15,7 +15,7 @@ namespace {
 // Kinetic energy of the coarse-grained flow: the box cut into 2x2x2 bins, sum |P_b|^2 / (2 M_b).
 // For uncorrelated thermal velocities it is (bins - 1) (3/2) T on average (the noise floor, 1.4 %
 // of the thermal energy for 500 particles); a developing shear or clustering mode makes it grow.
-double mean_flow_energy(const Simulator& sim) {
+double mean_flow_energy(const EventDrivenEngine& sim) {
   const Domain& d = sim.system().domain;
   Vec3 momentum[8];
   double mass[8] = {};
@@ -64,16 +64,16 @@ TEST(HomogeneousCooling, HaffLawAtPhi010) {
     spec.count = 500;
     spec.volume_fraction = 0.1;
     spec.seed = 100 + run;
-    SimulatorOptions options;
+    EventDrivenOptions options;
     options.check_invariants = false;
-    Simulator elastic(make_granular_gas(spec), options);
+    EventDrivenEngine elastic(make_granular_gas(spec), options);
     test::run_collisions(elastic, 10 * 500 / 2, 0.5);
     const double temperature0 = test::kinetic_temperature(elastic);
     ASSERT_NEAR(temperature0, 1.0, 1e-10);
     const double start = elastic.time();
 
     spec.restitution = e;
-    Simulator sim(make_granular_gas(spec), options, elastic.state());
+    EventDrivenEngine sim(make_granular_gas(spec), options, elastic.state());
     const double omega = test::enskog_collision_rate(500 / sim.system().domain.volume(), 1.0, 0.1, 1.0, 1.0);
     ASSERT_NEAR(6.0 / ((1 - e * e) * omega), t0, 1e-3) << "reference t0 of VALIDATION.md";
     for (int k = 0; k < 3; ++k) {

@@ -1,5 +1,5 @@
 // Energy bookkeeping: kinetic (translational + rotational) + potential + dissipated closes
-// (Simulator::energies().total()) in a dissipative run with gravity, rotation and walls.
+// (EventDrivenEngine::energies().total()) in a dissipative run with gravity, rotation and walls.
 #include <gtest/gtest.h>
 
 #include "core/rng.hpp"
@@ -31,10 +31,10 @@ TEST(EnergyBookkeeping, ClosesWithGravityRotationAndWalls) {
                   const Vec3 r(0.6 + 1.15 * (k % 6), 0.6 + 1.15 * (k / 6), 0.55 + 0.8 * rng.uniform());
                   system.add_particle(k % 3 == 0 ? 1 : 0, r, 3.0 * rng.normal3(), 5.0 * rng.normal3());
                 }
-                SimulatorOptions options;
+                EventDrivenOptions options;
                 options.collapse.contact_time = 1e-4;
                 options.check_invariants = true;
-                Simulator sim(system, options);
+                EventDrivenEngine sim(system, options);
                 const double total0 = sim.energies().total();
                 const double kinetic0 = sim.energies().translational + sim.energies().rotational;
                 double worst = 0;

@@ -21,9 +21,9 @@ RateResult measure_rate(double phi, std::size_t count, double equilibrate_per_pa
   spec.count = count;
   spec.volume_fraction = phi;
   spec.seed = seed;
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.check_invariants = false;
-  Simulator sim(make_granular_gas(spec), options);
+  EventDrivenEngine sim(make_granular_gas(spec), options);
   const double n = double(sim.particle_count());
   const double density = n / sim.system().domain.volume();
   const double omega0 = test::enskog_collision_rate(density, 1.0, phi, 1.0, 1.0);

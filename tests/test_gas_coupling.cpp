@@ -17,7 +17,7 @@ namespace {
 
 struct CoupledRun {
   Scene scene;
-  std::unique_ptr<Simulator> sim;
+  std::unique_ptr<EventDrivenEngine> sim;
   std::unique_ptr<GasCoupling> gas;
 };
 
@@ -25,7 +25,7 @@ CoupledRun start(const std::string& file, const std::vector<std::string>& overri
   CoupledRun run;
   run.scene = load_scene(std::string(CAROM_SCENES_DIR) + "/" + file, overrides);
   build_initial_state(run.scene);
-  run.sim = std::make_unique<Simulator>(run.scene.system, run.scene.options);
+  run.sim = std::make_unique<EventDrivenEngine>(run.scene.system, run.scene.method.event_driven);
   run.gas = attach_gas(*run.sim, run.scene);
   return run;
 }

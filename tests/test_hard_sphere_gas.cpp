@@ -10,7 +10,7 @@ namespace {
 // 864 smooth elastic spheres (FCC start, periodic) at phi = 0.45, where collisions are most
 // frequent (omega ~ 28 per unit time) and predictions are most delicate. The engine checks its
 // own invariants at every collision (check_invariants); independently, at 100 sample times an
-// all-pairs O(N^2) scan of Simulator::position(i) looks for any overlap.
+// all-pairs O(N^2) scan of EventDrivenEngine::position(i) looks for any overlap.
 // References and tolerances:
 //  - overlap <= 1e-10 of the contact distance: the engine's promise (DESIGN.md section 3);
 //    a missed collision shows up as an overlap of order (relative speed x sample interval), i.e.
@@ -26,9 +26,9 @@ TEST(DenseElasticGas, NoOverlapAndExactConservation) {
   spec.count = 864;
   spec.volume_fraction = 0.45;
   spec.seed = 12;
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.check_invariants = true;
-  Simulator sim(make_granular_gas(spec), options);
+  EventDrivenEngine sim(make_granular_gas(spec), options);
   const std::size_t n = sim.particle_count();
   ASSERT_EQ(n, 864u);
   const double energy0 = sim.energies().translational;

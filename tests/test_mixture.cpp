@@ -35,9 +35,9 @@ TEST(BidisperseMixture, PairCollisionFrequenciesMatchEnskog) {
   spec.fines_diameter_ratio = 0.5;
   spec.fines_number_fraction = 0.5;
   spec.seed = 5;
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.check_invariants = false;
-  Simulator sim(make_granular_gas(spec), options);
+  EventDrivenEngine sim(make_granular_gas(spec), options);
   const System& system = sim.system();
   ASSERT_EQ(system.species.size(), 2u);
   const double volume = system.domain.volume();

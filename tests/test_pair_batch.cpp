@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/rng.hpp"
-#include "events/pair_batch.hpp"
+#include "events/event_driven/pair_batch.hpp"
 
 namespace carom {
 namespace {

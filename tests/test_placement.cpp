@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "events/simulator.hpp"
+#include "events/event_driven/engine.hpp"
 #include "scenarios/run/run_output.hpp"
 #include "scenarios/scene/scene.hpp"
 
@@ -51,10 +51,10 @@ struct ScratchDir {
 
 /// Runs the 50-bead column (random placement, some temperature) for `time` s and writes its
 /// run file (snapshots at 0 and at `time`) and a checkpoint into dir. Returns the simulator.
-Simulator run_and_write(const fs::path& dir, double time) {
+EventDrivenEngine run_and_write(const fs::path& dir, double time) {
   Scene scene = parse_scene(column_scene("bead", 1e-3, kFill) + "[initial]\ntemperature = 1e-9\n", "source.toml");
   build_initial_state(scene);
-  Simulator sim(scene.system, scene.options);
+  EventDrivenEngine sim(scene.system, scene.method.event_driven);
   const RunInfo info{scene.text, scene.name, scene.seed};
   RunFile file((dir / "run.h5").string(), info, sim.system());
   file.write_snapshot(sim);
@@ -65,7 +65,7 @@ Simulator run_and_write(const fs::path& dir, double time) {
 }
 
 /// The state as a run reports it, in id order.
-std::vector<std::size_t> id_order(const Simulator& sim) {
+std::vector<std::size_t> id_order(const EventDrivenEngine& sim) {
   std::vector<std::size_t> order(sim.particle_count());
   for (std::size_t i = 0; i < order.size(); ++i) order[sim.system().particles.id[i]] = i;
   return order;
@@ -92,10 +92,10 @@ void expect_fragments(const std::string& message, const std::vector<std::string>
 
 // Reading back is a copy, not a recomputation: every double must come back bit for bit, from the
 // last snapshot of a run file and from a checkpoint (whose delayed states are advanced exactly
-// as Simulator::position does), so that a bed settled once is the same bed in every reuse.
+// as EventDrivenEngine::position does), so that a bed settled once is the same bed in every reuse.
 TEST(FromFile, RunFileAndCheckpointRoundTripBitForBit) {
   ScratchDir dir;
-  const Simulator sim = run_and_write(dir.path, 0.02);
+  const EventDrivenEngine sim = run_and_write(dir.path, 0.02);
   const std::vector<std::size_t> order = id_order(sim);
   for (const std::string source : {"run.h5", "checkpoint.h5"}) {
     SCOPED_TRACE(source);
@@ -115,7 +115,7 @@ TEST(FromFile, RunFileAndCheckpointRoundTripBitForBit) {
       }
       EXPECT_EQ(p.species[k], 0u);
     }
-    EXPECT_NO_THROW(Simulator(scene.system, scene.options));
+    EXPECT_NO_THROW(EventDrivenEngine(scene.system, scene.method.event_driven));
   }
   // snapshot = 0 is the placed state at t = 0; a fill is placed around the file's particles.
   Scene first = parse_scene(column_scene("bead", 1e-3, "fill = { count = 10 }\n") +
@@ -195,7 +195,7 @@ TEST(Settling, SmallColumnComesToRest) {
   EXPECT_GT(released, 0.0);
   EXPECT_LT(kinetic, 0.05 * released) << "kinetic " << kinetic << " J, released " << released << " J";
   EXPECT_NO_THROW(validate_initial_state(scene.system));
-  EXPECT_NO_THROW(Simulator(scene.system, scene.options));
+  EXPECT_NO_THROW(EventDrivenEngine(scene.system, scene.method.event_driven));
 
   Scene still = parse_scene(scene_text + "settle_zero_velocity = true\n", "column.toml");
   build_initial_state(still);

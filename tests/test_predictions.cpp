@@ -1,8 +1,8 @@
-// Simulator predictions (events/predict.cpp) against brute-force integration of the trajectories.
+// EventDrivenEngine predictions (events/predict.cpp) against brute-force integration of the trajectories.
 //
 // Small systems (2-4 particles, box walls, an inclined plane, a Wall::cylinder, gravity, periodic
 // boxes, sizes 1:5) are built; the simulator processes its cell crossings until its earliest
-// predicted event is a collision (Simulator::predicted_events()). The oracle integrates every
+// predicted event is a collision (EventDrivenEngine::predicted_events()). The oracle integrates every
 // trajectory exactly from the initial state and finds, for every pair and particle-wall couple,
 // the first time its gap falls below -tol by conservative advancement: it steps by
 // (gap + tol) / L, where L bounds |d gap / dt| on the horizon, so it can never step over a
@@ -21,8 +21,8 @@
 
 #include "core/rng.hpp"
 #include "core/roots.hpp"
-#include "events/pair_batch.hpp"
-#include "events/simulator.hpp"
+#include "events/event_driven/pair_batch.hpp"
+#include "events/event_driven/engine.hpp"
 #include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
@@ -41,13 +41,13 @@ struct Scenario {
 
 // Initial states read back from the simulator (it reorders particles internally).
 struct Oracle {
-  Oracle(const Simulator& simulator, double horizon_s) : sim(simulator), horizon(horizon_s) {
+  Oracle(const EventDrivenEngine& simulator, double horizon_s) : sim(simulator), horizon(horizon_s) {
     for (std::size_t i = 0; i < sim.particle_count(); ++i) {
       r0.push_back(sim.position(i));
       v0.push_back(sim.velocity(i));
     }
   }
-  const Simulator& sim;
+  const EventDrivenEngine& sim;
   double horizon;
   std::vector<Vec3> r0, v0;  // states at t = 0
   Vec3 r(std::size_t i, double s) const { return sim.system().flight.position(r0[i], v0[i], s); }
@@ -159,9 +159,9 @@ struct Check {
 void check_first_event(const Scenario& sc, std::uint64_t seed, Check& tally) {
   Rng rng(seed);
   System system = build(sc, rng);
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.check_invariants = true;
-  Simulator sim(system, options);
+  EventDrivenEngine sim(system, options);
   const Oracle oracle(sim, sc.horizon);
   const std::size_t n = sim.particle_count(), walls = sim.system().walls.size();
   const auto& radius = sim.system().particles.radius;
@@ -301,7 +301,7 @@ TEST(Predictions, PeriodicAxisOfThreeCellsIsRefused) {
   system.materials = MaterialTable(1, 0, ContactLaw{}, ContactLaw{});
   system.add_particle(0, Vec3(0.95, 1.65, 1.65), Vec3(-1, 0, 0));
   try {
-    Simulator sim(system);
+    EventDrivenEngine sim(system);
     ADD_FAILURE() << "a periodic axis of three cells was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("at least 4 particle diameters"), std::string::npos) << e.what();
@@ -318,7 +318,7 @@ TEST(Predictions, PeriodicAxisOfFourCells) {
   system.materials = MaterialTable(1, 0, ContactLaw{}, ContactLaw{});
   system.add_particle(0, Vec3(0.95, 2.2, 2.2), Vec3(-1, 0, 0));
   system.add_particle(0, Vec3(3.45, 2.2, 2.2), Vec3(1, 0, 0));
-  Simulator sim(system);
+  EventDrivenEngine sim(system);
   sim.run_until(0.44);
   EXPECT_EQ(sim.statistics().pair_events, 0u);
   sim.run_until(0.46);
@@ -349,7 +349,7 @@ TEST(Predictions, FallingBackThroughACellFaceUnderGravity) {
                 system.materials = MaterialTable(1, system.walls.size(), ContactLaw{}, ContactLaw{});
                 system.flight.gravity = Vec3(0, 0, -9.81);
                 system.add_particle(0, Vec3(2, 2, 2.6), Vec3(0, 0, 0.5));
-                Simulator sim(system);
+                EventDrivenEngine sim(system);
                 const double landing = (0.5 + std::sqrt(0.25 + 4 * 4.905 * 2.1)) / 9.81;
                 sim.run_until(landing - 1e-6);
                 EXPECT_EQ(sim.statistics().wall_events, 0u);
@@ -360,7 +360,7 @@ TEST(Predictions, FallingBackThroughACellFaceUnderGravity) {
 }
 
 // Without gravity the engine predicts cell crossings with a branch-free formula
-// (Simulator::straight_cell_crossing). Oracle: the general form, first_upward_crossing on both
+// (EventDrivenEngine::straight_cell_crossing). Oracle: the general form, first_upward_crossing on both
 // faces of every axis in order (the path that flights under gravity take), which must give the
 // same face and the same time bit for bit, for every particle of a gas in a box with two walled
 // and one periodic axis (so outer faces, which no crossing may name, are exercised), at the
@@ -372,7 +372,7 @@ TEST(Predictions, StraightCellCrossingsAreTheGeneralRootsBitForBit) {
   sc.diameters = {1.0};
   sc.particles = 150;
   Rng rng(2024);
-  Simulator sim(build(sc, rng));
+  EventDrivenEngine sim(build(sc, rng));
   auto oracle = [&](std::size_t i, const Vec3& r, const Vec3& v, double clock) {
     const HierarchicalGrid& grid = sim.grid();
     const auto p = static_cast<std::int32_t>(i);
@@ -411,7 +411,7 @@ TEST(Predictions, StraightCellCrossingsAreTheGeneralRootsBitForBit) {
   EXPECT_GT(outer_faces_nearby, 50) << "the walled axes' outer cells must be exercised";
 }
 
-// The cell scan (Simulator::scan_cells: cell lists walked two particles at a time, candidates
+// The cell scan (EventDrivenEngine::scan_cells: cell lists walked two particles at a time, candidates
 // tested four at a time in batches) against brute force. In a dense fluid (phi = 0.40, melted
 // from its lattice for 20 collisions per particle, so that cells hold 0 to 3 particles), every
 // particle's predicted collision must be, bit for bit and with the same partner, the earliest
@@ -423,7 +423,7 @@ TEST(Predictions, DenseGasCollisionsAreTheEarliestOfTheCellBlockByBruteForce) {
   spec.count = 2000;
   spec.volume_fraction = 0.40;
   spec.seed = 7;
-  Simulator melt(make_granular_gas(spec));
+  EventDrivenEngine melt(make_granular_gas(spec));
   test::run_collisions(melt, 20 * 2000 / 2, 0.05);
   System system = melt.system();
   for (std::size_t i = 0; i < melt.particle_count(); ++i) {
@@ -431,7 +431,7 @@ TEST(Predictions, DenseGasCollisionsAreTheEarliestOfTheCellBlockByBruteForce) {
     system.particles.velocity[i] = melt.velocity(i);
     system.particles.clock[i] = melt.time();
   }
-  const Simulator sim(system);
+  const EventDrivenEngine sim(system);
   const EngineState state = sim.state();
   const ParticleStore& p = state.particles;
   const HierarchicalGrid& grid = sim.grid();

@@ -24,9 +24,9 @@ TEST(RelaxEngine, SingleSphereFollowsExactRelaxation) {
   system.walls = box_walls(system.domain);
   system.materials = MaterialTable(1, system.walls.size(), ContactLaw{}, ContactLaw{});
   system.add_particle(0, Vec3(0.01, 0.01, 1.9), Vec3::Zero());
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.flight_model = FlightModel::Relax;
-  Simulator sim(system, options);
+  EventDrivenEngine sim(system, options);
   const double tau = 0.05, dt = 1e-3;
   const Vec3 g = system.flight.gravity;
   sim.add_synchronising_action("fluid_step", 0.0, dt, [&](GlobalStep& step) {
@@ -65,10 +65,10 @@ TEST(RelaxEngine, DenseGasWithUnequalDragNeverOverlaps) {
   system.domain.upper.z() += 1.1;
   system.walls = box_walls(system.domain);
   system.materials = MaterialTable(1, system.walls.size(), ContactLaw{}, ContactLaw{});
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.flight_model = FlightModel::Relax;
   options.check_invariants = true;
-  Simulator sim(system, options);
+  EventDrivenEngine sim(system, options);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Vec3> gas_velocity(sim.particle_count());

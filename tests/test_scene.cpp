@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "events/event_driven/engine.hpp"
 #include "scenarios/scene/scene.hpp"
 
 using namespace carom;
@@ -69,7 +70,7 @@ TEST_P(ShippedScenes, ParseBuildAndValidate) {
   EXPECT_EQ(scene.system.particles.size(), GetParam().particles);
   EXPECT_GT(scene.end_time, 0.0);
   EXPECT_NO_THROW(validate_initial_state(scene.system));
-  EXPECT_NO_THROW(Simulator(scene.system, scene.options));
+  EXPECT_NO_THROW(EventDrivenEngine(scene.system, scene.method.event_driven));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
@@ -104,10 +105,10 @@ TEST(Scene, ReadsEverySection) {
   EXPECT_DOUBLE_EQ(scene.system.materials.wall(0, 0).friction, 0.2);
   EXPECT_DOUBLE_EQ(scene.system.materials.wall(0, 4).restitution, 0.5);
   EXPECT_EQ(scene.system.walls[4].name, "z_low");
-  EXPECT_DOUBLE_EQ(scene.options.collapse.contact_time, 1e-5);
+  EXPECT_DOUBLE_EQ(scene.method.event_driven.collapse.contact_time, 1e-5);
   EXPECT_EQ(scene.seed, 5u);
   EXPECT_DOUBLE_EQ(scene.output.checkpoint_every, 0.05);
-  EXPECT_DOUBLE_EQ(scene.options.grid_level_ratio, 0.4);
+  EXPECT_DOUBLE_EQ(scene.method.event_driven.grid_level_ratio, 0.4);
   build_initial_state(scene);
   EXPECT_EQ(scene.system.particles.size(), 20u);
 }
@@ -182,12 +183,12 @@ TEST(Scene, ReadsGasAndFlight) {
   EXPECT_EQ(scene.gas.sides[5].kind, GasSide::Kind::Outlet);
   EXPECT_EQ(scene.gas.sides[0].kind, GasSide::Kind::Wall);
   EXPECT_EQ(scene.gas.sides[1].kind, GasSide::Kind::FreeSlip);
-  EXPECT_EQ(scene.flight.model, FlightSettings::Model::Kick);
+  EXPECT_EQ(scene.flight.model, FlightModel::Kick);
   EXPECT_DOUBLE_EQ(scene.flight.particle_step, 2e-4) << "kick step defaults to the fluid step";
-  EXPECT_EQ(scene.options.flight_model, FlightModel::Ballistic) << "kicks fly ballistic";
+  EXPECT_EQ(scene.method.event_driven.flight_model, FlightModel::Ballistic) << "kicks fly ballistic";
   // A coupled gas without [flight] flies relax.
   Scene relax = parse_scene(kBase + "[gas]\ncells = [2, 3, 4]\n", "good.toml");
-  EXPECT_EQ(relax.options.flight_model, FlightModel::Relax);
+  EXPECT_EQ(relax.method.event_driven.flight_model, FlightModel::Relax);
 }
 
 TEST(SceneErrors, OverlappingParticlesNamed) {

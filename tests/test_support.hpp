@@ -4,13 +4,13 @@
 #include <numbers>
 #include <vector>
 
-#include "events/simulator.hpp"
+#include "events/event_driven/engine.hpp"
 
 namespace carom::test {
 
 /// Largest overlap of any pair, relative to its contact distance, by an all-pairs O(N^2) scan
 /// of the positions at the simulator's current time (minimum image on periodic axes).
-inline double max_relative_overlap(const Simulator& sim) {
+inline double max_relative_overlap(const EventDrivenEngine& sim) {
   const std::size_t n = sim.particle_count();
   const auto& radius = sim.system().particles.radius;
   std::vector<Vec3> r(n);
@@ -27,7 +27,7 @@ inline double max_relative_overlap(const Simulator& sim) {
 }
 
 /// Largest overlap of a particle with a wall, relative to its radius.
-inline double max_relative_wall_overlap(const Simulator& sim) {
+inline double max_relative_wall_overlap(const EventDrivenEngine& sim) {
   double worst = 0.0;
   const auto& radius = sim.system().particles.radius;
   for (std::size_t i = 0; i < sim.particle_count(); ++i)
@@ -49,14 +49,14 @@ inline double enskog_collision_rate(double number_density, double diameter, doub
 }
 
 /// Runs until at least `pair_collisions` more pair collisions have happened, in slices of dt.
-inline void run_collisions(Simulator& sim, std::uint64_t pair_collisions, double dt) {
+inline void run_collisions(EventDrivenEngine& sim, std::uint64_t pair_collisions, double dt) {
   const std::uint64_t target = sim.statistics().pair_events + pair_collisions;
   while (sim.statistics().pair_events < target) sim.run_until(sim.time() + dt);
 }
 
 /// Translational kinetic temperature per particle, T = 2 KE / (3 (N - 1)) (total momentum is
 /// zero in the periodic gases, so N - 1 particles carry the thermal motion; k = 1).
-inline double kinetic_temperature(const Simulator& sim) {
+inline double kinetic_temperature(const EventDrivenEngine& sim) {
   return 2.0 * sim.energies().translational / (3.0 * (double(sim.particle_count()) - 1.0));
 }
 

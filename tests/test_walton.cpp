@@ -1,10 +1,10 @@
-// Walton's e / mu / beta0 collision law (events/walton.hpp): exact cases and exact identities.
+// Walton's e / mu / beta0 collision law (events/laws/walton.hpp): exact cases and exact identities.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/rng.hpp"
-#include "events/walton.hpp"
+#include "events/laws/walton.hpp"
 
 namespace carom {
 namespace {

@@ -34,7 +34,7 @@ std::string object(const std::vector<std::pair<std::string, double>>& entries) {
 
 }  // namespace
 
-std::string RunAnalysis::summary_json(const Simulator& sim) const {
+std::string RunAnalysis::summary_json(const CollisionMethod& sim) const {
   const Conclusions c = conclude(sim);
   const System& system = sim.system();
   const std::size_t S = system.species.size();
@@ -100,7 +100,7 @@ std::string RunAnalysis::summary_json(const Simulator& sim) const {
   return j.str();
 }
 
-std::string RunAnalysis::report(const Simulator& sim) const {
+std::string RunAnalysis::report(const CollisionMethod& sim) const {
   const Conclusions c = conclude(sim);
   const System& system = sim.system();
   const std::size_t S = system.species.size();

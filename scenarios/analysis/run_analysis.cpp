@@ -71,7 +71,7 @@ std::vector<std::pair<std::string, std::size_t>> series_widths(std::size_t speci
 
 }  // namespace
 
-RunAnalysis::RunAnalysis(const Scene& scene, const Simulator& sim) : scene_(scene) {
+RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim) : scene_(scene) {
   const System& system = sim.system();
   const ParticleStore& p = system.particles;
   const std::size_t n = sim.particle_count();
@@ -111,7 +111,7 @@ RunAnalysis::RunAnalysis(const Scene& scene, const Simulator& sim) : scene_(scen
   for (std::size_t k = 0; k < mixing.size() / 2; ++k) tagged_[mixing[k]] = 1;
 }
 
-RunAnalysis::RunAnalysis(const Scene& scene, const Simulator& sim, const std::string& run_file,
+RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim, const std::string& run_file,
                          double resume_time)
     : RunAnalysis(scene, sim) {
   // The constructor above derived grids and species from the scene; tags and start heights are
@@ -160,7 +160,7 @@ void RunAnalysis::write_setup(const std::string& run_file) const {
   file.flush();
 }
 
-SeriesRow RunAnalysis::sample(const Simulator& sim, const GasCoupling* gas) {
+SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas) {
   const System& system = sim.system();
   const ParticleStore& p = system.particles;
   const std::size_t n = sim.particle_count(), S = system.species.size();
@@ -245,7 +245,7 @@ SeriesRow RunAnalysis::sample(const Simulator& sim, const GasCoupling* gas) {
   return row;
 }
 
-RunAnalysis::Conclusions RunAnalysis::conclude(const Simulator& sim) const {
+RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const {
   const System& system = sim.system();
   const std::size_t S = system.species.size();
   Conclusions c;

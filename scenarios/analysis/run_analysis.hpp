@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "scenarios/analysis/dispersion.hpp"
-#include "events/simulator.hpp"
+#include "events/method.hpp"
 #include "fluid/coupling.hpp"
 #include "scenarios/analysis/mixing.hpp"
 #include "scenarios/scene/scene.hpp"
@@ -42,21 +42,21 @@ class RunAnalysis {
  public:
   /// A fresh run at t = 0: tags the mixing species (the lower half by height, the median of its
   /// particles' heights splitting them) and records every particle's start height.
-  RunAnalysis(const Scene& scene, const Simulator& sim);
+  RunAnalysis(const Scene& scene, const CollisionMethod& sim);
   /// A resumed run: the tags, start heights and history (up to `resume_time`, exclusive of rows
   /// at or after it, as the run file drops them) read from the run file.
-  RunAnalysis(const Scene& scene, const Simulator& sim, const std::string& run_file,
+  RunAnalysis(const Scene& scene, const CollisionMethod& sim, const std::string& run_file,
               double resume_time);
 
   /// The /analysis group of a fresh run file: tagged (by particle id, 0/1), start_height (m),
   /// sample grids. Written once at t = 0.
   void write_setup(const std::string& run_file) const;
   /// Measures a sample at sim.time(), remembers it and returns it for the run file.
-  SeriesRow sample(const Simulator& sim, const GasCoupling* gas);
+  SeriesRow sample(const CollisionMethod& sim, const GasCoupling* gas);
   /// The "analysis" object of summary.json (JSON text, no trailing newline).
-  std::string summary_json(const Simulator& sim) const;
+  std::string summary_json(const CollisionMethod& sim) const;
   /// report.md: the numbers, with what they say about the mechanism.
-  std::string report(const Simulator& sim) const;
+  std::string report(const CollisionMethod& sim) const;
 
   /// Sample grid of the Lacey index, and of the local fields.
   const SampleGrid& mixing_grid() const { return mixing_grid_; }
@@ -84,7 +84,7 @@ class RunAnalysis {
     std::vector<Vec3> gas_velocity, gas_force;  ///< S: time averages, m/s and N.
     std::vector<double> porosity;               ///< S: time average.
   };
-  Conclusions conclude(const Simulator& sim) const;
+  Conclusions conclude(const CollisionMethod& sim) const;
 
   const Scene& scene_;
   int vertical_ = 2;    ///< Axis opposite gravity (z without gravity).

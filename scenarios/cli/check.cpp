@@ -78,7 +78,7 @@ static void describe_gas(const Scene& scene, std::ostringstream& out) {
     }
     out << "\n";
   }
-  if (scene.flight.model == FlightSettings::Model::Kick)
+  if (scene.flight.model == FlightModel::Kick)
     out << "  flight: kick (ballistic, explicit drag kicks every " << short_number(scene.flight.particle_step)
         << " s; stable only while that is below 2 tau of every particle, checked at every fluid step)\n";
   else
@@ -146,7 +146,7 @@ std::string describe_scene(const Scene& scene) {
   out << "\nmodel:\n";
   describe_gas(scene, out);
   out << "  rotation: " << (friction ? "on (some mu > 0: collisions exchange spin)" : "off (every mu = 0: smooth spheres, spins never change)") << "\n";
-  const CollapseOptions& c = scene.options.collapse;
+  const CollapseOptions& c = scene.method.event_driven.collapse;
   if (c.contact_time > 0)
     out << "  inelastic collapse: TC model, collisions within " << format_number(c.contact_time) << " s of a particle's previous one are elastic\n";
   else if (dissipative && (system.flight.has_gravity()))
@@ -156,9 +156,9 @@ std::string describe_scene(const Scene& scene) {
   if (c.elastic_below_speed > 0) out << "  impacts slower than " << format_number(c.elastic_below_speed) << " m/s are elastic\n";
 
   if (p.size() > 0) {
-    HierarchicalGrid grid(d, p.radius, scene.options.grid_level_ratio);
+    HierarchicalGrid grid(d, p.radius, scene.method.event_driven.grid_level_ratio);
     out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "")
-        << " (a new level below " << format_number(scene.options.grid_level_ratio) << " x the diameter above)\n";
+        << " (a new level below " << format_number(scene.method.event_driven.grid_level_ratio) << " x the diameter above)\n";
     for (std::size_t l = 0; l < grid.levels().size(); ++l) {
       const auto& level = grid.levels()[l];
       out << "    level " << l << ": " << level.cells[0] << " x " << level.cells[1] << " x " << level.cells[2]

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
       if (*check) {
         build_initial_state(scene);
         try {
-          Simulator probe(scene.system, scene.options);  // the checks a run makes at its start
+          make_method(scene.system, scene.method);  // the checks a run makes at its start
         } catch (const std::invalid_argument& e) {
           throw SceneError(scene.file + ": " + e.what());
         }

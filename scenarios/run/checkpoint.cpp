@@ -1,4 +1,5 @@
-// Checkpoints: the whole dynamic state of a run, written atomically, read back exactly.
+// Checkpoints: the whole dynamic state of a run (the method's, the gas's), written atomically,
+// read back exactly.
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,188 +13,16 @@ namespace carom {
 using namespace output_detail;
 
 
-namespace {
 
-/// One Event per particle as four parallel datasets: time, partner, partner_counter, kind.
-void write_events(const h5::Group& group, const std::vector<Event>& list) {
-  std::vector<double> time;
-  std::vector<std::int32_t> partner;
-  std::vector<std::uint32_t> partner_counter;
-  std::vector<std::uint8_t> kind;
-  for (const Event& e : list) {
-    time.push_back(e.time);
-    partner.push_back(e.partner);
-    partner_counter.push_back(e.partner_counter);
-    kind.push_back(static_cast<std::uint8_t>(e.kind));
-  }
-  group.write("time", time);
-  group.write("partner", partner);
-  group.write("partner_counter", partner_counter);
-  group.write("kind", kind);
-}
-
-std::vector<Event> read_events(const h5::Group& group, hsize_t n) {
-  const std::vector<double> time = group.read<double>("time", {n});
-  const std::vector<std::int32_t> partner = group.read<std::int32_t>("partner", {n});
-  const std::vector<std::uint32_t> counter = group.read<std::uint32_t>("partner_counter", {n});
-  const std::vector<std::uint8_t> kind = group.read<std::uint8_t>("kind", {n});
-  std::vector<Event> list(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (kind[i] > static_cast<std::uint8_t>(EventKind::CellCrossing))
-      group.fail("kind[" + std::to_string(i) + "] is not an event kind");
-    list[i] = Event{time[i], partner[i], counter[i], static_cast<EventKind>(kind[i])};
-  }
-  return list;
-}
-
-void write_state(const h5::Group& group, const EngineState& s) {
-  const std::size_t n = s.particles.size();
-  group.set_attribute("time", s.time);
-  group.set_attribute("last_particle_event", s.last_particle_event);
-  group.set_attribute("stall_window", s.stall_window);
-
-  const ParticleStore& p = s.particles;
-  const h5::Group particles = group.create_group("particles");
-  particles.write("position", flatten(p.position), {n, 3});
-  particles.write("velocity", flatten(p.velocity), {n, 3});
-  particles.write("clock", p.clock);
-  particles.write("radius", p.radius);
-  particles.write("event_counter", p.event_counter);
-  particles.write("spin", flatten(p.spin), {n, 3});
-  particles.write("mass", p.mass);
-  particles.write("inertia", p.inertia);
-  particles.write("last_collision", p.last_collision);
-  particles.write("species", p.species);
-  particles.write("id", p.id);
-
-  std::vector<std::int32_t> cells;
-  for (const auto& c : s.cells) cells.insert(cells.end(), c.begin(), c.end());
-  group.write("cells", cells, {n, 3});
-  group.write("cell_list_places", s.places);
-
-  write_events(group.create_group("events"), s.events);
-  write_events(group.create_group("crossings"), s.crossings);
-  std::vector<double> rate;
-  std::vector<Vec3> drive;
-  for (const RelaxFlight& f : s.flights) {
-    rate.push_back(f.rate);
-    drive.push_back(f.drive);
-  }
-  const h5::Group flights = group.create_group("flights");
-  flights.write("rate", rate);
-  flights.write("drive", flatten(drive), {drive.size(), 3});
-
-  const RunStatistics& st = s.statistics;
-  const h5::Group stats = group.create_group("statistics");
-  stats.set_attribute("species_count", static_cast<std::uint64_t>(st.species_count));
-  stats.set_attribute("wall_count", static_cast<std::uint64_t>(st.wall_count));
-  stats.set_attribute("dissipated_energy", st.dissipated_energy);
-  stats.set_attribute("events", st.events);
-  stats.set_attribute("invalid_events", st.invalid_events);
-  stats.set_attribute("pair_events", st.pair_events);
-  stats.set_attribute("wall_events", st.wall_events);
-  stats.set_attribute("cell_crossings", st.cell_crossings);
-  stats.write("pair_collisions", st.pair_collisions);
-  stats.write("wall_collisions", st.wall_collisions);
-  stats.write("pair_impulse", st.pair_impulse);
-  stats.write("wall_impulse",
-              flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
-              {st.wall_impulse.size(), 3});
-  stats.write("virial", row_major(st.virial), {3, 3});
-
-  group.write("stall_window_start", s.stall_window_start);
-  group.write("stall_count", s.stall_count);
-
-  const h5::Group actions = group.create_group("actions");
-  std::vector<std::string> names;
-  std::vector<double> next_time;
-  for (const auto& [name, t] : s.action_times) {
-    names.push_back(name);
-    next_time.push_back(t);
-  }
-  actions.write_strings("name", names);
-  actions.write("next_time", next_time);
-}
-
-EngineState read_state(const h5::Group& group) {
-  EngineState s;
-  s.time = group.attribute<double>("time");
-  s.last_particle_event = group.attribute<double>("last_particle_event");
-  s.stall_window = group.attribute<double>("stall_window");
-
-  ParticleStore& p = s.particles;
-  const h5::Group particles = group.open_group("particles");
-  const std::vector<hsize_t> shape = particles.open_dataset("position").shape();
-  if (shape.size() != 2 || shape[1] != 3) particles.fail("position must have shape {N, 3}");
-  const hsize_t n = shape[0];
-  p.position = unflatten(particles.read<double>("position", {n, 3}));
-  p.velocity = unflatten(particles.read<double>("velocity", {n, 3}));
-  p.clock = particles.read<double>("clock", {n});
-  p.radius = particles.read<double>("radius", {n});
-  p.event_counter = particles.read<std::uint32_t>("event_counter", {n});
-  p.spin = unflatten(particles.read<double>("spin", {n, 3}));
-  p.mass = particles.read<double>("mass", {n});
-  p.inertia = particles.read<double>("inertia", {n});
-  p.last_collision = particles.read<double>("last_collision", {n});
-  p.species = particles.read<std::uint32_t>("species", {n});
-  p.id = particles.read<std::uint64_t>("id", {n});
-
-  const std::vector<std::int32_t> cells = group.read<std::int32_t>("cells", {n, 3});
-  s.cells.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    s.cells[i] = {cells[3 * i], cells[3 * i + 1], cells[3 * i + 2]};
-  if (group.contains("cell_list_places"))
-    s.places = group.read<std::int32_t>("cell_list_places", {n});
-
-  s.events = read_events(group.open_group("events"), n);
-  s.crossings = read_events(group.open_group("crossings"), n);
-  const h5::Group flights = group.open_group("flights");
-  const std::vector<double> rate = flights.read<double>("rate", {n});
-  const std::vector<Vec3> drive = unflatten(flights.read<double>("drive", {n, 3}));
-  s.flights.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s.flights[i] = RelaxFlight{rate[i], drive[i]};
-
-  RunStatistics& st = s.statistics;
-  const h5::Group stats = group.open_group("statistics");
-  const auto species = stats.attribute<std::uint64_t>("species_count");
-  const auto walls = stats.attribute<std::uint64_t>("wall_count");
-  st.resize(species, walls);
-  st.dissipated_energy = stats.attribute<double>("dissipated_energy");
-  st.events = stats.attribute<std::uint64_t>("events");
-  st.invalid_events = stats.attribute<std::uint64_t>("invalid_events");
-  st.pair_events = stats.attribute<std::uint64_t>("pair_events");
-  st.wall_events = stats.attribute<std::uint64_t>("wall_events");
-  st.cell_crossings = stats.attribute<std::uint64_t>("cell_crossings");
-  st.pair_collisions = stats.read<std::uint64_t>("pair_collisions", {species * species});
-  st.wall_collisions = stats.read<std::uint64_t>("wall_collisions", {species * walls});
-  st.pair_impulse = stats.read<double>("pair_impulse", {species * species});
-  const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
-  st.wall_impulse.assign(impulse.begin(), impulse.end());
-  st.virial = from_row_major(stats.read<double>("virial", {3, 3}));
-
-  s.stall_window_start = group.read<double>("stall_window_start", {n});
-  s.stall_count = group.read<std::uint32_t>("stall_count", {n});
-
-  const h5::Group actions = group.open_group("actions");
-  const std::vector<std::string> names = actions.read_strings("name");
-  const std::vector<double> next_time = actions.read<double>("next_time", {names.size()});
-  for (std::size_t k = 0; k < names.size(); ++k)
-    s.action_times.emplace_back(names[k], next_time[k]);
-  return s;
-}
-
-}  // namespace
-
-void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info,
+void write_checkpoint(const std::string& path, const CollisionMethod& sim, const RunInfo& info,
                       const GasCoupling* gas) {
-  const EngineState state = sim.state();
   const std::string temporary = path + ".tmp";
   bool created = false;
   try {
     h5::File file = h5::File::create(temporary);
     created = true;
     write_info(file, info, kCheckpointKind);
-    write_state(file.create_group("state"), state);
+    sim.save_state(file.create_group("state"));
     if (gas != nullptr) file.create_group("gas").write("state", gas->save());
     file.close();
     replace_file(temporary, path);
@@ -204,11 +33,11 @@ void write_checkpoint(const std::string& path, const Simulator& sim, const RunIn
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
-  const h5::File file = h5::File::open(path, false);
   Checkpoint checkpoint;
-  checkpoint.info = read_info(file, kCheckpointKind);
-  checkpoint.state = read_state(file.open_group("state"));
-  if (file.contains("gas")) checkpoint.gas_state = file.open_group("gas").read<double>("state");
+  checkpoint.file = std::make_shared<h5::File>(h5::File::open(path, false));
+  checkpoint.info = read_info(*checkpoint.file, kCheckpointKind);
+  if (!checkpoint.file->contains("state")) checkpoint.file->fail("holds no /state: not a complete checkpoint");
+  if (checkpoint.file->contains("gas")) checkpoint.gas_state = checkpoint.file->open_group("gas").read<double>("state");
   return checkpoint;
 }
 

@@ -2,7 +2,7 @@
 
 namespace carom {
 
-std::unique_ptr<GasCoupling> attach_gas(Simulator& sim, const Scene& scene,
+std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene,
                                         const std::vector<double>* saved_state) {
   if (scene.gas.coupling == CouplingLevel::None) return nullptr;
   const System& system = sim.system();
@@ -15,7 +15,7 @@ std::unique_ptr<GasCoupling> attach_gas(Simulator& sim, const Scene& scene,
   else
     gas->prepare(sim.system().particles);  // porosity at t = 0 for the first outputs
   GasCoupling* coupling = gas.get();
-  const bool kick = scene.flight.model == FlightSettings::Model::Kick;
+  const bool kick = scene.flight.model == FlightModel::Kick;
   const double particle_step = scene.flight.particle_step;
   // The fluid step comes first in the calendar, so at a common time the kick uses the new drag.
   sim.add_synchronising_action("fluid_step", sim.time(), scene.gas.time_step,

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "events/simulator.hpp"
+#include "events/method.hpp"
 #include "fluid/coupling.hpp"
 #include "scenarios/scene/scene.hpp"
 
@@ -14,7 +14,7 @@ namespace carom {
 /// gas.time_step from the simulator's time; "drag_kick" every flight.particle_step for kick
 /// flights). Returns nullptr when the scene has no coupled gas. `saved_state`: the gas state of
 /// a checkpoint, restored so that a resumed run continues bit for bit.
-std::unique_ptr<GasCoupling> attach_gas(Simulator& sim, const Scene& scene,
+std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene,
                                         const std::vector<double>* saved_state = nullptr);
 
 }  // namespace carom

@@ -13,6 +13,7 @@
 
 #include "carom/version.hpp"
 #include "core/hdf5.hpp"
+#include "core/hdf5_arrays.hpp"
 #include "scenarios/run/run_output.hpp"
 
 namespace carom::output_detail {
@@ -20,34 +21,10 @@ namespace carom::output_detail {
 constexpr const char* kRunKind = "carom run";
 constexpr const char* kCheckpointKind = "carom checkpoint";
 
-inline std::vector<double> flatten(const std::vector<Vec3>& vectors) {
-  std::vector<double> values;
-  values.reserve(3 * vectors.size());
-  for (const Vec3& v : vectors) values.insert(values.end(), {v.x(), v.y(), v.z()});
-  return values;
-}
-
-inline std::vector<Vec3> unflatten(const std::vector<double>& values) {
-  std::vector<Vec3> vectors(values.size() / 3);
-  for (std::size_t i = 0; i < vectors.size(); ++i)
-    vectors[i] = Vec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
-  return vectors;
-}
-
-/// A 3x3 tensor as 9 values, row by row (xx, xy, xz, yx, ...).
-inline std::vector<double> row_major(const Eigen::Matrix3d& tensor) {
-  std::vector<double> values(9);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) values[3 * r + c] = tensor(r, c);
-  return values;
-}
-
-inline Eigen::Matrix3d from_row_major(const std::vector<double>& values) {
-  Eigen::Matrix3d tensor;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) tensor(r, c) = values[3 * r + c];
-  return tensor;
-}
+using h5::flatten;
+using h5::from_row_major;
+using h5::row_major;
+using h5::unflatten;
 
 /// "run.h5" -> "run.xmf" (any other name gets ".xmf" appended).
 inline std::string xdmf_path_of(const std::string& path) {

@@ -62,7 +62,7 @@ struct Schedule {
 };
 
 /// The loop shared by run and resume. `fresh`: a new run, whose t = 0 outputs are written here.
-int run_loop(Simulator& sim, const GasCoupling* gas, RunFile& file, RunAnalysis& analysis, const Scene& scene,
+int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAnalysis& analysis, const Scene& scene,
              const RunInfo& info, const fs::path& dir, double end_time, bool fresh, bool quiet) {
   install_stop_handlers();
   const std::string checkpoint_path = (dir / "checkpoint.h5").string();
@@ -210,9 +210,9 @@ bool stop_requested() { return g_stop != 0; }
 int run_scene(Scene scene, const RunOptions& options) {
   // Everything that can be wrong with a scene is found before the first file is created.
   build_initial_state(scene);
-  std::optional<Simulator> sim;
+  std::unique_ptr<CollisionMethod> sim;
   try {
-    sim.emplace(scene.system, scene.options);
+    sim = make_method(scene.system, scene.method);
   } catch (const std::invalid_argument& e) {
     throw SceneError(scene.file + ": " + e.what());
   }
@@ -241,7 +241,7 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   std::vector<std::string> overrides;
   if (end_time) overrides.push_back("time.end=" + format_number(*end_time));
   Scene scene = parse_scene(checkpoint.info.scene_text, scene_file, overrides);
-  const double now = checkpoint.state.time;
+  const double now = checkpoint.method_state().attribute<double>("time");
   const double end = scene.end_time;
   if (end < now)
     throw SceneError(directory + ": the end time " + format_number(end) + " s is before the checkpoint's time " +
@@ -252,11 +252,17 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
     if (!quiet) std::cout << "carom: " << directory << " is already at t = " << now << " s; nothing to do (use --end)\n";
     return kExitOk;
   }
-  Simulator sim(scene.system, scene.options, std::move(checkpoint.state));
-  std::unique_ptr<GasCoupling> gas = attach_gas(sim, scene, &checkpoint.gas_state);
-  RunAnalysis analysis(scene, sim, (dir / "run.h5").string(), now);
+  std::unique_ptr<CollisionMethod> sim;
+  try {
+    sim = restore_method(scene.system, scene.method, checkpoint.method_state());
+  } catch (const std::exception& e) {
+    throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
+  }
+  std::unique_ptr<GasCoupling> gas = attach_gas(*sim, scene, &checkpoint.gas_state);
+  checkpoint.file.reset();  // everything is read: the run writes its next checkpoint over it
+  RunAnalysis analysis(scene, *sim, (dir / "run.h5").string(), now);
   std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());
-  return run_loop(sim, gas.get(), *file, analysis, scene, info, dir, end, false, quiet);
+  return run_loop(*sim, gas.get(), *file, analysis, scene, info, dir, end, false, quiet);
 }
 
 }  // namespace carom

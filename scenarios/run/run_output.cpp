@@ -72,7 +72,7 @@ SeriesLayout series_layout(std::size_t species, std::size_t walls) {
 }
 
 /// sum_i m_i v_i v_i^T at the simulator's current time, J.
-Eigen::Matrix3d kinetic_tensor(const Simulator& sim) {
+Eigen::Matrix3d kinetic_tensor(const CollisionMethod& sim) {
   Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
   const ParticleStore& p = sim.system().particles;
   for (std::size_t i = 0; i < sim.particle_count(); ++i) {
@@ -278,7 +278,7 @@ void RunFile::Impl::drop_snapshots_from(double time) {
   }
 }
 
-void RunFile::write_snapshot(const Simulator& sim, const GasCoupling* gas) {
+void RunFile::write_snapshot(const CollisionMethod& sim, const GasCoupling* gas) {
   Impl& d = *impl_;
   if (!d.snapshots.empty() && d.snapshots.back().time >= sim.time())
     d.drop_snapshots_from(sim.time());
@@ -322,7 +322,7 @@ void RunFile::write_snapshot(const Simulator& sim, const GasCoupling* gas) {
   d.write_xdmf();
 }
 
-void RunFile::append_sample(const Simulator& sim, const GasCoupling* gas, const SeriesRow& extra) {
+void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, const SeriesRow& extra) {
   Impl& d = *impl_;
   const double time = sim.time();
   if (d.has_previous && d.previous_time >= time) d.drop_samples_from(time);

@@ -28,17 +28,14 @@
 /// it is rewritten (atomically) after every snapshot.
 ///
 /// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
-/// scene_name; /scene; /state (attributes time, last_particle_event, stall_window) with
-/// particles/ (every ParticleStore array, in the simulator's internal order), cells (N x 3),
-/// events/ and crossings/ (each: time, partner, partner_counter, kind), statistics/ (counters as
-/// attributes; pair_collisions, wall_collisions, wall_impulse (W x 3), virial (3 x 3)),
-/// stall_window_start, stall_count, actions/ (name, next_time). Doubles are stored as native
-/// doubles: bit for bit.
+/// scene_name; /scene; /state: the method's state, attribute method = its kind (for the
+/// event-driven engine see events/event_driven/engine_state.hpp); /gas: the gas's state when
+/// the scene has one. Doubles are stored as native doubles: bit for bit.
 #include <cstdint>
 #include <memory>
 #include <string>
 
-#include "events/simulator.hpp"
+#include "events/method.hpp"
 #include "fluid/coupling.hpp"
 #include "scenarios/analysis/run_analysis.hpp"
 
@@ -66,11 +63,11 @@ class RunFile {
   RunFile& operator=(const RunFile&) = delete;
 
   /// Adds a snapshot of every particle at sim.time() and rewrites the XDMF sidecar.
-  void write_snapshot(const Simulator& sim, const GasCoupling* gas = nullptr);
+  void write_snapshot(const CollisionMethod& sim, const GasCoupling* gas = nullptr);
   /// Appends one row of every time series at sim.time(); rates and the pressure tensor are
   /// averages over the interval since the previous row (since t = 0 for the first). `extra`:
   /// further series of this row (the run's analysis), created at their first row.
-  void append_sample(const Simulator& sim, const GasCoupling* gas = nullptr, const SeriesRow& extra = {});
+  void append_sample(const CollisionMethod& sim, const GasCoupling* gas = nullptr, const SeriesRow& extra = {});
   const std::string& path() const;
 
  private:
@@ -81,14 +78,17 @@ class RunFile {
 
 /// Writes a checkpoint atomically (to a temporary file, then renamed over `path`), so a crash
 /// while writing never destroys the previous checkpoint.
-void write_checkpoint(const std::string& path, const Simulator& sim, const RunInfo& info,
+void write_checkpoint(const std::string& path, const CollisionMethod& sim, const RunInfo& info,
                       const GasCoupling* gas = nullptr);
 
-/// A checkpoint read back.
+/// A checkpoint read back: what identifies the run, and the file kept open for the method's
+/// state (restore_method) and the gas's.
 struct Checkpoint {
   RunInfo info;
-  EngineState state;
+  std::shared_ptr<const h5::File> file;  ///< The checkpoint, open read-only.
   std::vector<double> gas_state;  ///< GasCoupling::save(); empty without a gas.
+  /// The method's saved state (CollisionMethod::save_state), for restore_method.
+  h5::Group method_state() const { return file->open_group("state"); }
 };
 Checkpoint read_checkpoint(const std::string& path);
 

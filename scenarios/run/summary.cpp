@@ -12,7 +12,7 @@
 
 namespace carom {
 
-void TimeAverages::sample(const Simulator& sim) {
+void TimeAverages::sample(const CollisionMethod& sim) {
   const double kinetic = sim.energies().translational;
   const std::size_t n = sim.particle_count();
   const double root = n > 0 ? std::sqrt(2.0 * kinetic / (3.0 * static_cast<double>(n))) : 0.0;
@@ -56,7 +56,7 @@ bool enskog_applies(const System& system) {
 }
 }  // namespace
 
-std::string summary_json(const Simulator& sim, const Scene& scene, const RunStretch& stretch) {
+std::string summary_json(const CollisionMethod& sim, const Scene& scene, const RunStretch& stretch) {
   const System& system = sim.system();
   const RunStatistics& now = sim.statistics();
   const RunStatistics& before = stretch.start_statistics;

@@ -32,7 +32,7 @@
 #include <chrono>
 #include <string>
 
-#include "events/simulator.hpp"
+#include "events/method.hpp"
 #include "fluid/coupling.hpp"
 #include "scenarios/scene/scene.hpp"
 
@@ -47,7 +47,7 @@ std::string json_number(double x);
 class TimeAverages {
  public:
   /// Records the state of `sim` at its current time.
-  void sample(const Simulator& sim);
+  void sample(const CollisionMethod& sim);
   /// Time average of the translational kinetic energy, J.
   double kinetic_energy() const { return span() > 0 ? kinetic_integral_ / span() : last_kinetic_; }
   /// Time average of sqrt(T), sqrt(J) (collision rates scale with it).
@@ -74,7 +74,7 @@ struct RunStretch {
 };
 
 /// The summary as JSON text.
-std::string summary_json(const Simulator& sim, const Scene& scene, const RunStretch& stretch);
+std::string summary_json(const CollisionMethod& sim, const Scene& scene, const RunStretch& stretch);
 
 /// Writes `text` to `path` atomically (temporary file, then rename).
 void write_text_atomically(const std::string& path, const std::string& text);

@@ -135,24 +135,24 @@ void read_flight_and_gas(TableReader& root, Scene& scene) {
     g->finish();
   }
   const bool coupled = gas.coupling != CouplingLevel::None;
-  scene.flight.model = model == "relax"  ? FlightSettings::Model::Relax
-                       : model == "kick" ? FlightSettings::Model::Kick
-                                         : FlightSettings::Model::Ballistic;
-  if (coupled && !model_given) scene.flight.model = FlightSettings::Model::Relax;
-  if (!coupled && scene.flight.model != FlightSettings::Model::Ballistic)
+  scene.flight.model = model == "relax"  ? FlightModel::Relax
+                       : model == "kick" ? FlightModel::Kick
+                                         : FlightModel::Ballistic;
+  if (coupled && !model_given) scene.flight.model = FlightModel::Relax;
+  if (!coupled && scene.flight.model != FlightModel::Ballistic)
     throw SceneError(model_where + ": flight.model = \"" + model +
                      "\" needs a gas to drag the particles: add a [gas] section with coupling = "
                      "\"one_way\" or \"two_way\", or use \"ballistic\"");
-  if (coupled && model_given && scene.flight.model == FlightSettings::Model::Ballistic)
+  if (coupled && model_given && scene.flight.model == FlightModel::Ballistic)
     throw SceneError(
         model_where +
         ": flight.model = \"ballistic\" ignores the gas of [gas]; use \"relax\" (exact drag "
         "flights) or \"kick\" (explicit drag kicks), or set gas.coupling = \"none\"");
-  if (scene.flight.model == FlightSettings::Model::Kick && scene.flight.particle_step == 0.0)
+  if (scene.flight.model == FlightModel::Kick && scene.flight.particle_step == 0.0)
     scene.flight.particle_step = gas.time_step;
-  scene.options.flight_model = scene.flight.model == FlightSettings::Model::Relax
-                                   ? FlightModel::Relax
-                                   : FlightModel::Ballistic;
+  // Kick flights are ballistic between the kicks (the kicks are the gas coupling's).
+  scene.method.event_driven.flight_model =
+      scene.flight.model == FlightModel::Relax ? FlightModel::Relax : FlightModel::Ballistic;
 }
 
 }  // namespace carom

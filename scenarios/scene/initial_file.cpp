@@ -56,21 +56,22 @@ StoredParticles read_checkpoint_file(const InitialFile& from, const std::string&
     throw SceneError(context + ": is a checkpoint, which holds one state and no snapshots; remove "
                      "initial.from_file.snapshot");
   const Checkpoint checkpoint = read_checkpoint(from.path);
-  // The stored scene gives the species' names and the gravity that brings each particle's
-  // stored state to the checkpoint's time (as Simulator::position does).
+  // The stored scene gives the species' names, and the method restored from it each particle's
+  // state at the checkpoint's time.
   const Scene stored = parse_scene(checkpoint.info.scene_text, from.path + " (stored scene)");
   StoredParticles s;
   for (const Species& species : stored.system.species) s.species_names.push_back(species.name);
-  const ParticleStore& p = checkpoint.state.particles;
+  const std::unique_ptr<CollisionMethod> method =
+      restore_method(stored.system, stored.method, checkpoint.method_state());
+  const ParticleStore& p = method->system().particles;
   std::vector<std::size_t> order(p.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.id[a] < p.id[b]; });
-  const double time = checkpoint.state.time;
+  const double time = method->time();
   for (std::size_t i : order) {
-    const double dt = time - p.clock[i];
-    s.position.push_back(stored.system.flight.position(p.position[i], p.velocity[i], dt));
-    s.velocity.push_back(stored.system.flight.velocity(p.velocity[i], dt));
-    s.spin.push_back(p.spin[i]);
+    s.position.push_back(method->position(i));
+    s.velocity.push_back(method->velocity(i));
+    s.spin.push_back(method->spin(i));
     s.radius.push_back(p.radius[i]);
     s.species.push_back(static_cast<std::int32_t>(p.species[i]));
   }

@@ -8,6 +8,7 @@
 
 #include "scenarios/scene/gas_scene.hpp"
 #include "scenarios/scene/analysis_scene.hpp"
+#include "scenarios/scene/method_scene.hpp"
 #include "scenarios/scene/overrides.hpp"
 
 namespace carom {
@@ -40,7 +41,7 @@ namespace {
 
 const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
                                             "collisions", "flight", "initial", "time",    "output", "engine", "gas",
-                                            "analysis"};
+                                            "analysis", "method"};
 /// Sections of the design that later versions implement: named, so the error says so.
 const std::vector<std::string> kLaterSections = {};
 
@@ -266,7 +267,7 @@ void read_collisions(TableReader& root, Scene& scene) {
         if ((!species || *species == s) && (!wall || *wall == k)) system.materials.set_wall(s, k, law);
     w.finish();
   }
-  CollapseOptions& collapse = scene.options.collapse;
+  CollapseOptions& collapse = scene.method.event_driven.collapse;
   if (auto t = c->table("collapse")) {
     const std::string model = t->string("model", "none", {"none", "tc"});
     if (model == "tc") {
@@ -333,9 +334,9 @@ void read_time_and_output(TableReader& root, Scene& scene) {
 
 void read_engine(TableReader& root, Scene& scene) {
   if (auto e = root.table("engine")) {
-    scene.options.grid_level_ratio = e->number("grid_level_ratio", scene.options.grid_level_ratio,
+    scene.method.event_driven.grid_level_ratio = e->number("grid_level_ratio", scene.method.event_driven.grid_level_ratio,
                                                Range{0.0, 1.0, false, true, "size ratio that starts a new grid level (0: one grid)"});
-    scene.options.check_invariants = e->boolean("check_invariants", scene.options.check_invariants);
+    scene.method.event_driven.check_invariants = e->boolean("check_invariants", scene.method.event_driven.check_invariants);
     e->finish();
   }
 }
@@ -394,6 +395,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   read_time_and_output(root, scene);
   read_engine(root, scene);
   read_analysis(root, scene);
+  read_method(root, scene);
   root.finish();
   return scene;
 }

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/system.hpp"
-#include "events/simulator.hpp"
+#include "events/method_factory.hpp"
 #include "fluid/gas_settings.hpp"
 #include "scenarios/scene/scene_reader.hpp"
 
@@ -66,8 +66,7 @@ struct OutputSchedule {
 
 /// [flight]: how particles move between events (DESIGN.md section 2).
 struct FlightSettings {
-  enum class Model { Ballistic, Relax, Kick };
-  Model model = Model::Ballistic;
+  FlightModel model = FlightModel::Ballistic;  ///< ballistic, relax or kick.
   double particle_step = 0;  ///< Kick: time between drag kicks dt_p, s.
 };
 
@@ -90,7 +89,7 @@ struct Scene {
   std::string name;           ///< [meta] name.
   std::string description;    ///< [meta] description.
   System system;              ///< Box, walls, species, laws, gravity; particles after build_initial_state.
-  SimulatorOptions options;   ///< Collapse remedies, grid levels.
+  MethodSettings method;      ///< [method]; collapse remedies, grid levels (event_driven).
   std::vector<Region> regions;              ///< [regions.*]; regions[0] is the whole domain ("domain").
   std::vector<std::optional<Fill>> fills;   ///< Per species.
   std::vector<ListedParticle> listed;       ///< [[particles]].

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "events/simulator.hpp"
+#include "events/method_factory.hpp"
 
 namespace carom {
 
@@ -13,18 +13,19 @@ void settle(Scene& scene) {
   // Settling happens without the gas: ballistic flights, unless fixed particles sit under
   // gravity (they need each particle's own flight: relax flights without drag, which are the
   // same parabola, with a global step that only bounds the predictions).
-  SimulatorOptions options = scene.options;
+  MethodSettings settings = scene.method;
   const bool any_fixed = std::any_of(system.species.begin(), system.species.end(),
                                      [](const Species& s) { return s.fixed; });
-  options.flight_model = any_fixed ? FlightModel::Relax : FlightModel::Ballistic;
-  Simulator sim(system, options);
+  settings.event_driven.flight_model = any_fixed ? FlightModel::Relax : FlightModel::Ballistic;
+  const std::unique_ptr<CollisionMethod> method = make_method(system, settings);
+  CollisionMethod& sim = *method;
   if (any_fixed)
     sim.add_synchronising_action("settling_step", 0.0, std::max(scene.settle_time / 100.0, 1e-3),
                                  [](GlobalStep&) {});
   try {
     sim.run_until(scene.settle_time);
   } catch (const InelasticCollapse& e) {
-    const CollapseOptions& c = scene.options.collapse;
+    const CollapseOptions& c = scene.method.event_driven.collapse;
     throw SceneError(
         context + ": the settling run collapsed: " + e.what() + " Hint: a bed coming to rest needs the TC model; " +
         (c.contact_time > 0.0

@@ -38,7 +38,7 @@ void check_case(const SweepSpec& spec, const SweepCase& c) {
   Scene scene = load_scene(spec.scene, c.overrides, c.seed);
   try {
     build_initial_state(scene);
-    Simulator probe(scene.system, scene.options);
+    make_method(scene.system, scene.method);  // the checks a run makes at its start
   } catch (const std::invalid_argument& e) {
     throw SceneError(scene.file + ": " + e.what());
   } catch (const SceneError&) {

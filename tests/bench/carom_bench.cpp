@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "events/simulator.hpp"
+#include "events/event_driven/engine.hpp"
 #include "scenarios/scene/granular_gas.hpp"
 
 using namespace carom;
@@ -37,11 +37,11 @@ int main(int argc, char** argv) {
 
   if (equilibrate < 0.0) equilibrate = spec.volume_fraction >= 0.4 ? 150.0 : 10.0;
   const System system = make_granular_gas(spec);
-  SimulatorOptions options;
+  EventDrivenOptions options;
   options.grid_level_ratio = level_ratio;
   options.grid_subdivision = subdivision;
   options.check_invariants = false;
-  Simulator sim(system, options);
+  EventDrivenEngine sim(system, options);
   const std::size_t n = sim.particle_count();
   const double volume = sim.system().domain.volume();
   std::printf("particles=%zu species=%zu grid_levels=%zu box=%.4g\n", n, sim.system().species.size(),

@@ -1,13 +1,14 @@
-// Exact event predictions for ballistic flights: pairs, walls, cylinder, grid cells.
+// The prediction interface for ballistic flights (straight, and under gravity): exact pair,
+// wall and cell-crossing times, all roots of quadratics.
 #include <algorithm>
 
 #include "core/roots.hpp"
-#include "pair_batch.hpp"
-#include "simulator.hpp"
+#include "events/event_driven/engine.hpp"
+#include "events/event_driven/pair_batch.hpp"
 
 namespace carom {
 
-double Simulator::wall_time(std::int32_t i, const Wall& wall) const {
+double EventDrivenEngine::wall_time(std::int32_t i, const Wall& wall) const {
   const HotState& p = hot_[i];
   const Vec3& r = p.position;
   const Vec3& v = p.velocity;
@@ -26,8 +27,7 @@ double Simulator::wall_time(std::int32_t i, const Wall& wall) const {
   return p.clock + s;
 }
 
-Event Simulator::cell_crossing(std::int32_t i) const {
-  if (!has_gravity_) return straight_cell_crossing(i);
+Event EventDrivenEngine::cell_crossing(std::int32_t i) const {
   Event best;
   const HotState& p = hot_[i];
   const Vec3 lower = grid_.cell_lower(i), upper = grid_.cell_upper(i);
@@ -47,7 +47,7 @@ Event Simulator::cell_crossing(std::int32_t i) const {
   return best;
 }
 
-Event Simulator::straight_cell_crossing(std::int32_t i) const {
+Event EventDrivenEngine::straight_cell_crossing(std::int32_t i) const {
   // On each axis only the face ahead can be reached: at s = -C / B (clamped at 0) with
   // B = |v_k| and C the signed distance past that face, which is first_upward_crossing's linear
   // case operation for operation (so the same time bit for bit: -(r - lower) is lower - r
@@ -76,7 +76,7 @@ Event Simulator::straight_cell_crossing(std::int32_t i) const {
 }
 
 template <bool kGravity>
-double Simulator::pair_time(std::int32_t i, std::int32_t j) const {
+double EventDrivenEngine::pair_time(std::int32_t i, std::int32_t j) const {
   const HotState& a = hot_[i];
   const HotState& b = hot_[j];
   return pair_contact<kGravity, true>(a.position, a.velocity, a.clock, a.radius, b.position,
@@ -84,20 +84,36 @@ double Simulator::pair_time(std::int32_t i, std::int32_t j) const {
                                       system_.domain);
 }
 
-void Simulator::predict(std::int32_t i, bool new_trajectory) {
-  if (relax_) {
-    predict_relax(i, new_trajectory);
-    return;
-  }
+template <>
+void EventDrivenEngine::predict<StraightFlights>(std::int32_t i, bool new_trajectory) {
+  if (new_trajectory) agenda_[i].crossing = straight_cell_crossing(i);
+  predict_ballistic<false>(i);
+}
+
+template <>
+void EventDrivenEngine::predict<GravityFlights>(std::int32_t i, bool new_trajectory) {
   if (new_trajectory) agenda_[i].crossing = cell_crossing(i);
-  if (has_gravity_)
-    predict_with<true>(i);
+  predict_ballistic<true>(i);
+}
+
+template <>
+void EventDrivenEngine::predict_after_crossing<StraightFlights>(std::int32_t i, int axis, int direction) {
+  if (grid_.levels().size() > 1)
+    predict<StraightFlights>(i);
   else
-    predict_with<false>(i);
+    scan_slab<false>(i, axis, direction);
+}
+
+template <>
+void EventDrivenEngine::predict_after_crossing<GravityFlights>(std::int32_t i, int axis, int direction) {
+  if (grid_.levels().size() > 1)
+    predict<GravityFlights>(i);
+  else
+    scan_slab<true>(i, axis, direction);
 }
 
 template <bool kGravity>
-void Simulator::predict_with(std::int32_t i) {
+void EventDrivenEngine::predict_ballistic(std::int32_t i) {
   Event best;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
     const double t = wall_time(i, system_.walls[w]);
@@ -122,7 +138,7 @@ void Simulator::predict_with(std::int32_t i) {
   schedule(i);
 }
 
-void Simulator::schedule(std::int32_t i) {
+void EventDrivenEngine::schedule(std::int32_t i) {
   // Round-off may put a root a hair before the last event: nothing happens in the past.
   Agenda& a = agenda_[i];
   if (a.collision.time < last_particle_event_) a.collision.time = last_particle_event_;
@@ -131,7 +147,7 @@ void Simulator::schedule(std::int32_t i) {
 }
 
 template <bool kGravity>
-std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
+std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
                                    double& best_time) const {
   const HotState& a = hot_[i];
   const PairQuery query{a.position, a.velocity, a.clock, a.radius, system_.flight.gravity,
@@ -198,8 +214,8 @@ std::int32_t Simulator::scan_cells(std::int32_t i, const std::int32_t* cells, in
 }
 
 template <bool kGravity>
-void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) {
-  agenda_[i].crossing = cell_crossing(i);
+void EventDrivenEngine::scan_slab(std::int32_t i, int axis, int direction) {
+  agenda_[i].crossing = kGravity ? cell_crossing(i) : straight_cell_crossing(i);
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;
   const int count = grid_.own_slab(i, axis, direction, cells, wrapped);
@@ -211,10 +227,10 @@ void Simulator::predict_after_crossing(std::int32_t i, int axis, int direction) 
   schedule(i);
 }
 
-template void Simulator::predict_after_crossing<true>(std::int32_t, int, int);
-template void Simulator::predict_after_crossing<false>(std::int32_t, int, int);
+template void EventDrivenEngine::scan_slab<true>(std::int32_t, int, int);
+template void EventDrivenEngine::scan_slab<false>(std::int32_t, int, int);
 
-template void Simulator::predict_with<true>(std::int32_t);
-template void Simulator::predict_with<false>(std::int32_t);
+template void EventDrivenEngine::predict_ballistic<true>(std::int32_t);
+template void EventDrivenEngine::predict_ballistic<false>(std::int32_t);
 
 }  // namespace carom

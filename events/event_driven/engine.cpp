@@ -1,4 +1,4 @@
-#include "simulator.hpp"
+#include "events/event_driven/engine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +53,7 @@ void validate_system(const System& system, FlightModel flight_model) {
 }
 }  // namespace
 
-Simulator::Simulator(System system, SimulatorOptions options)
+EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
     : system_(std::move(system)), options_(options) {
   validate_system(system_, options_.flight_model);
   ParticleStore& p = system_.particles;
@@ -62,37 +62,39 @@ Simulator::Simulator(System system, SimulatorOptions options)
   grid_ = HierarchicalGrid(system_.domain, p.radius, options_.grid_level_ratio, options_.grid_subdivision);
   for (std::size_t i = 0; i < n; ++i) grid_.insert(static_cast<std::int32_t>(i), p.position[i]);
   statistics_.resize(system_.species.size(), system_.walls.size());
-  has_gravity_ = system_.flight.has_gravity();
-  relax_ = options_.flight_model == FlightModel::Relax;
+  flight_kind_ = options_.flight_model == FlightModel::Relax ? Flights::Relax
+                 : system_.flight.has_gravity()              ? Flights::Gravity
+                                                             : Flights::Straight;
   flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   hold_fixed_particles();
   agenda_.assign(n, Agenda{});
   end_slot_ = n;
   calendar_.resize(n + 1);
 
-  stall_window_ = options_.collapse.stall_window;
-  if (stall_window_ <= 0.0 && n > 0) {
-    const double d_min = 2.0 * *std::min_element(p.radius.begin(), p.radius.end());
+  stall_.limit = options_.collapse.stall_collisions;
+  stall_.window = options_.collapse.stall_window;
+  if (stall_.window <= 0.0 && n > 0) {
     double mean_square = 0.0;
     for (const Vec3& v : p.velocity) mean_square += v.squaredNorm();
-    const double speed = std::max(std::sqrt(mean_square / n),
-                                  std::sqrt(system_.flight.gravity.norm() * d_min));
-    stall_window_ = speed > 0.0 ? 1e-9 * d_min / speed : 0.0;
+    stall_.window = StallDetector::default_window(
+        options_.collapse, 2.0 * *std::min_element(p.radius.begin(), p.radius.end()),
+        std::sqrt(mean_square / n), system_.flight.gravity.norm());
   }
   time_ = last_particle_event_ = n > 0 ? *std::max_element(p.clock.begin(), p.clock.end()) : 0.0;
   hot_.resize(n);
   body_.resize(n);
-  counter_.resize(n);
+  counter_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
-  for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
+  for (std::size_t i = 0; i < n; ++i) predict_any(static_cast<std::int32_t>(i));
 }
 
-Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
+EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, EngineState state)
     : system_(std::move(system)), options_(options) {
   system_.particles = std::move(state.particles);
   const std::size_t n = system_.particles.size();
   if (state.cells.size() != n || state.events.size() != n || state.stall_count.size() != n ||
-      state.stall_window_start.size() != n)
+      state.stall_window_start.size() != n || state.event_counters.size() != n ||
+      state.last_collision.size() != n)
     throw std::invalid_argument("saved state: the arrays do not all hold one entry per particle");
   grid_ = HierarchicalGrid(system_.domain, system_.particles.radius, options_.grid_level_ratio,
                            options_.grid_subdivision);
@@ -105,70 +107,76 @@ Simulator::Simulator(System system, SimulatorOptions options, EngineState state)
   else if (!state.places.empty())
     throw std::invalid_argument("saved state: the cell-list places do not hold one entry per particle");
   for (std::int32_t i : order) grid_.insert_at(i, state.cells[i]);
-  has_gravity_ = system_.flight.has_gravity();
-  relax_ = options_.flight_model == FlightModel::Relax;
+  flight_kind_ = options_.flight_model == FlightModel::Relax ? Flights::Relax
+                 : system_.flight.has_gravity()              ? Flights::Gravity
+                                                             : Flights::Straight;
   flights_ = std::move(state.flights);
   if (flights_.empty()) flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   if (flights_.size() != n) throw std::invalid_argument("saved state: flights missing");
   if (state.crossings.size() != n) throw std::invalid_argument("saved state: crossings missing");
   agenda_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
-    agenda_[i] = Agenda{state.events[i], state.crossings[i], state.stall_window_start[i],
-                        state.stall_count[i]};
+    agenda_[i] = Agenda{state.events[i], state.crossings[i],
+                        StallRecord{state.stall_window_start[i], state.stall_count[i]}};
   end_slot_ = n;
   calendar_.resize(n + 1);
   for (std::size_t i = 0; i < n; ++i) calendar_.set(i, next_event(i).time);
   time_ = state.time;
   last_particle_event_ = state.last_particle_event;
   statistics_ = std::move(state.statistics);
-  stall_window_ = state.stall_window;
+  stall_.limit = options_.collapse.stall_collisions;
+  stall_.window = state.stall_window;
   restored_action_times_ = std::move(state.action_times);
   restored_ = true;
   hot_.resize(n);
   body_.resize(n);
-  counter_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
+  counter_ = std::move(state.event_counters);
+  for (std::size_t i = 0; i < n; ++i) {
+    body_[i].last_collision = state.last_collision[i];
+    load_records(static_cast<std::int32_t>(i));
+  }
 }
 
-void Simulator::copy_state_to(ParticleStore& p) const {
+void EventDrivenEngine::copy_state_to(ParticleStore& p) const {
   for (std::size_t i = 0; i < hot_.size(); ++i) {
     p.position[i] = hot_[i].position;
     p.velocity[i] = hot_[i].velocity;
     p.clock[i] = hot_[i].clock;
     p.spin[i] = body_[i].spin;
-    p.last_collision[i] = body_[i].last_collision;
-    p.event_counter[i] = counter_[i];
   }
 }
 
-EngineState Simulator::state() const {
+EngineState EventDrivenEngine::state() const {
   EngineState s;
   s.particles = system_.particles;
   copy_state_to(s.particles);
+  s.event_counters = counter_;
   const std::size_t n = system_.particles.size();
+  s.last_collision.resize(n);
   s.cells.resize(n);
   s.places.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
+    s.last_collision[i] = body_[i].last_collision;
     s.cells[i] = grid_.cell_of(static_cast<std::int32_t>(i));
     s.places[i] = grid_.place_in_cell(static_cast<std::int32_t>(i));
   }
   for (const Agenda& a : agenda_) {
     s.events.push_back(a.collision);
     s.crossings.push_back(a.crossing);
-    s.stall_window_start.push_back(a.stall_window_start);
-    s.stall_count.push_back(a.stall_count);
+    s.stall_window_start.push_back(a.stall.window_start);
+    s.stall_count.push_back(a.stall.count);
   }
   s.flights = flights_;
   s.time = time_;
   s.last_particle_event = last_particle_event_;
   s.statistics = statistics_;
-  s.stall_window = stall_window_;
+  s.stall_window = stall_.window;
   for (const PeriodicAction& a : actions_) s.action_times.emplace_back(a.name, a.next_time);
   return s;
 }
 
-void Simulator::add_periodic_action(std::string name, double first_time, double interval,
-                                    std::function<void()> action) {
+void EventDrivenEngine::add_periodic_action(std::string name, double first_time, double interval,
+                                            std::function<void()> action) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
   for (const auto& [saved_name, saved_time] : restored_action_times_)
     if (saved_name == name) first_time = saved_time;
@@ -177,8 +185,8 @@ void Simulator::add_periodic_action(std::string name, double first_time, double 
   calendar_.set(end_slot_ + actions_.size(), first_time);
 }
 
-void Simulator::add_synchronising_action(std::string name, double first_time, double interval,
-                                         std::function<void(GlobalStep&)> step) {
+void EventDrivenEngine::add_synchronising_action(std::string name, double first_time, double interval,
+                                                 std::function<void(GlobalStep&)> step) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
   if (!(first_time >= time_))
     throw std::invalid_argument(name + ": the first step is before the current time");
@@ -188,16 +196,16 @@ void Simulator::add_synchronising_action(std::string name, double first_time, do
   calendar_.resize(end_slot_ + 1 + actions_.size());
   calendar_.set(end_slot_ + actions_.size(), first_time);
   const double horizon = next_synchronisation();
-  if (horizon < horizon_ && relax_ && !restored_) {
+  if (horizon < horizon_ && flight_kind_ == Flights::Relax && !restored_) {
     // Predictions made so far may reach past the new horizon: make them again. (A restored
     // run's events were made with the saved horizon and stand as they are.)
     horizon_ = horizon;
-    for (std::size_t i = 0; i < agenda_.size(); ++i) predict(static_cast<std::int32_t>(i));
+    for (std::size_t i = 0; i < agenda_.size(); ++i) predict_any(static_cast<std::int32_t>(i));
   }
   horizon_ = horizon;
 }
 
-void Simulator::hold_fixed_particles() {
+void EventDrivenEngine::hold_fixed_particles() {
   ParticleStore& p = system_.particles;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (system_.species[p.species[i]].fixed) {
@@ -206,14 +214,23 @@ void Simulator::hold_fixed_particles() {
     }
 }
 
-double Simulator::next_synchronisation() const {
+double EventDrivenEngine::next_synchronisation() const {
   double t = kNever;
   for (const PeriodicAction& a : actions_)
     if (a.step && a.next_time < t) t = a.next_time;
   return t;
 }
 
-void Simulator::fire_action(std::size_t k) {
+void EventDrivenEngine::predict_any(std::int32_t i) {
+  switch (flight_kind_) {
+    case Flights::Straight: return predict<StraightFlights>(i);
+    case Flights::Gravity: return predict<GravityFlights>(i);
+    case Flights::Relax: return predict<RelaxFlights>(i);
+  }
+}
+
+template <class Flight>
+void EventDrivenEngine::fire_action(std::size_t k) {
   PeriodicAction& action = actions_[k];
   time_ = action.next_time;
   if (!action.step) {
@@ -225,7 +242,7 @@ void Simulator::fire_action(std::size_t k) {
   }
   ParticleStore& p = system_.particles;
   const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i) advance(static_cast<std::int32_t>(i), time_);
+  for (std::size_t i = 0; i < n; ++i) advance<Flight>(static_cast<std::int32_t>(i), time_);
   last_particle_event_ = time_;
   store_state();
   GlobalStep step{time_, p, flights_};
@@ -239,15 +256,26 @@ void Simulator::fire_action(std::size_t k) {
     load_records(static_cast<std::int32_t>(i));
     ++counter_[i];
   }
-  for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
+  for (std::size_t i = 0; i < n; ++i) predict<Flight>(static_cast<std::int32_t>(i));
 }
 
-bool Simulator::run_until(double t_end) {
+bool EventDrivenEngine::run_until(double t_end) {
   if (!(t_end >= time_))
     throw std::invalid_argument("run_until: the end time " + std::to_string(t_end) +
                                 " s is before the current time " + std::to_string(time_) + " s");
-  if (relax_ && horizon_ == kNever && !agenda_.empty())
+  if (flight_kind_ == Flights::Relax && horizon_ == kNever && !agenda_.empty())
     throw std::logic_error("relax flights need a synchronising action (the fluid step)");
+  // The flight is chosen here, once: everything below is compiled for it.
+  switch (flight_kind_) {
+    case Flights::Straight: return run_events<StraightFlights>(t_end);
+    case Flights::Gravity: return run_events<GravityFlights>(t_end);
+    case Flights::Relax: return run_events<RelaxFlights>(t_end);
+  }
+  return false;
+}
+
+template <class Flight>
+bool EventDrivenEngine::run_events(double t_end) {
   calendar_.set(end_slot_, t_end);
   for (std::uint32_t countdown = 4096;; --countdown) {
     if (countdown == 0) {
@@ -269,7 +297,7 @@ bool Simulator::run_until(double t_end) {
       const std::size_t next = calendar_.top_slot();
       if (next < end_slot_) prefetch_particle(static_cast<std::int32_t>(next));
       try {
-        process_particle_event(static_cast<std::int32_t>(slot));
+        process_particle_event<Flight>(static_cast<std::int32_t>(slot));
       } catch (...) {  // the stall detector: leave the calendar and the store consistent
         calendar_.set(slot, next_event(static_cast<std::int32_t>(slot)).time);
         store_state();
@@ -281,41 +309,34 @@ bool Simulator::run_until(double t_end) {
       store_state();
       return true;
     } else {
-      fire_action(slot - end_slot_ - 1);
+      fire_action<Flight>(slot - end_slot_ - 1);
     }
   }
 }
 
-void Simulator::advance(std::int32_t i, double t) {
-  HotState& m = hot_[i];
-  const double dt = t - m.clock;
-  if (dt == 0.0) return;
-  if (relax_) {
-    const RelaxFlight& f = flights_[i];
-    m.position += f.displacement(m.velocity, dt);
-    m.velocity = f.velocity(m.velocity, dt);
-  } else if (has_gravity_) {
-    m.position = system_.flight.position(m.position, m.velocity, dt);
-    m.velocity = system_.flight.velocity(m.velocity, dt);
-  } else {
-    m.position += dt * m.velocity;
+Vec3 EventDrivenEngine::position(std::size_t i) const {
+  const HotState& m = hot_[i];
+  const double dt = time_ - m.clock;
+  switch (flight_kind_) {
+    case Flights::Straight: return StraightFlights::position_after(m, dt, system_.flight, flights_[i]);
+    case Flights::Gravity: return GravityFlights::position_after(m, dt, system_.flight, flights_[i]);
+    case Flights::Relax: break;
   }
-  m.clock = t;
+  return RelaxFlights::position_after(m, dt, system_.flight, flights_[i]);
 }
 
-Vec3 Simulator::position(std::size_t i) const {
+Vec3 EventDrivenEngine::velocity(std::size_t i) const {
   const HotState& m = hot_[i];
-  if (relax_) return m.position + flights_[i].displacement(m.velocity, time_ - m.clock);
-  return system_.flight.position(m.position, m.velocity, time_ - m.clock);
+  const double dt = time_ - m.clock;
+  switch (flight_kind_) {
+    case Flights::Straight: return StraightFlights::velocity_after(m, dt, system_.flight, flights_[i]);
+    case Flights::Gravity: return GravityFlights::velocity_after(m, dt, system_.flight, flights_[i]);
+    case Flights::Relax: break;
+  }
+  return RelaxFlights::velocity_after(m, dt, system_.flight, flights_[i]);
 }
 
-Vec3 Simulator::velocity(std::size_t i) const {
-  const HotState& m = hot_[i];
-  if (relax_) return flights_[i].velocity(m.velocity, time_ - m.clock);
-  return system_.flight.velocity(m.velocity, time_ - m.clock);
-}
-
-Energies Simulator::energies() const {
+Energies EventDrivenEngine::energies() const {
   Energies e;
   const ParticleStore& p = system_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -327,38 +348,37 @@ Energies Simulator::energies() const {
   return e;
 }
 
-void Simulator::process_particle_event(std::int32_t i) {
+std::string EventDrivenEngine::describe(std::int32_t i) const {
+  const ParticleStore& p = system_.particles;
+  std::ostringstream out;
+  out << "particle " << p.id[i] << " (species " << system_.species[p.species[i]].name << ", at "
+      << position(i).transpose() << " m)";
+  return out.str();
+}
+
+template <class Flight>
+void EventDrivenEngine::process_particle_event(std::int32_t i) {
   const Event event = next_event(i);
   // Stall detector, second half: events that never move time on (the first half, in
   // book_collision, counts one particle's collisions in a short window).
-  if (event.time > last_particle_event_) {
-    events_without_progress_ = 0;
-  } else if (++events_without_progress_ > 1000000 + 100 * agenda_.size()) {
-    const ParticleStore& p = system_.particles;
-    std::ostringstream out;
-    out << "the run is stalled at t = " << event.time << " s: " << events_without_progress_
-        << " events without simulated time moving on, the last for particle " << p.id[i]
-        << " (species " << system_.species[p.species[i]].name << ", at " << position(i).transpose()
-        << " m). This is inelastic collapse or particles at rest in lasting contact. Remedy: turn "
-           "on the TC model (collapse contact_time, e.g. 1e-5 s), or make slow impacts elastic "
-           "(collapse elastic_below_speed).";
-    throw InelasticCollapse(out.str(), {p.id[i]});
-  }
+  if (stall_.stuck(event.time, last_particle_event_, agenda_.size()))
+    throw InelasticCollapse(stuck_diagnostic(event.time, stall_.events_without_progress, describe(i)),
+                            {system_.particles.id[i]});
   switch (event.kind) {
     case EventKind::Pair:
       if (counter_[event.partner] != event.partner_counter) {
         ++statistics_.invalid_events;
-        predict(i, /*new_trajectory=*/false);
+        predict<Flight>(i, /*new_trajectory=*/false);
         return;
       }
-      collide_pair(i, event.partner, event.time);
+      collide_pair<Flight>(i, event.partner, event.time);
       break;
     case EventKind::Wall:
-      collide_wall(i, event.partner, event.time);
+      collide_wall<Flight>(i, event.partner, event.time);
       break;
     case EventKind::CellCrossing:
       last_particle_event_ = time_ = event.time;
-      cross_cell(i, event.partner);
+      cross_cell<Flight>(i, event.partner);
       break;
     case EventKind::None:
       // Only reachable if a particle has nothing to do and the run has no end: wait.
@@ -367,5 +387,9 @@ void Simulator::process_particle_event(std::int32_t i) {
   }
   ++statistics_.events;
 }
+
+template bool EventDrivenEngine::run_events<StraightFlights>(double);
+template bool EventDrivenEngine::run_events<GravityFlights>(double);
+template bool EventDrivenEngine::run_events<RelaxFlights>(double);
 
 }  // namespace carom

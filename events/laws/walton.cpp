@@ -1,4 +1,4 @@
-#include "walton.hpp"
+#include "events/laws/walton.hpp"
 
 #include <cmath>
 

@@ -1,14 +1,14 @@
-// Event predictions for relax flights (gravity plus a linear drag frozen for one fluid step):
+// The prediction interface for relax flights (gravity plus a linear drag frozen for one fluid step):
 // pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
 // (horizon_), where every particle is synchronised and predicted again.
 #include <algorithm>
 
 #include "core/relax_roots.hpp"
-#include "simulator.hpp"
+#include "events/event_driven/engine.hpp"
 
 namespace carom {
 
-double Simulator::relax_pair_time(std::int32_t i, std::int32_t j, double limit) const {
+double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double limit) const {
   const HotState& a = hot_[i];
   const HotState& b = hot_[j];
   const RelaxFlight& fa = flights_[i];
@@ -58,7 +58,7 @@ double Simulator::relax_pair_time(std::int32_t i, std::int32_t j, double limit) 
   return s == kNever ? kNever : t_ref + s;
 }
 
-double Simulator::relax_wall_time(std::int32_t i, const Wall& wall, double limit) const {
+double EventDrivenEngine::relax_wall_time(std::int32_t i, const Wall& wall, double limit) const {
   const HotState& p = hot_[i];
   const RelaxFlight& f = flights_[i];
   const double horizon = std::min(horizon_, limit) - p.clock;
@@ -75,7 +75,7 @@ double Simulator::relax_wall_time(std::int32_t i, const Wall& wall, double limit
   return s == kNever ? kNever : p.clock + s;
 }
 
-Event Simulator::relax_cell_crossing(std::int32_t i) const {
+Event EventDrivenEngine::relax_cell_crossing(std::int32_t i) const {
   Event best;
   const HotState& p = hot_[i];
   const RelaxFlight& f = flights_[i];
@@ -99,7 +99,8 @@ Event Simulator::relax_cell_crossing(std::int32_t i) const {
   return best;
 }
 
-void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
+template <>
+void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajectory) {
   if (horizon_ == kNever) {
     // No fluid step registered yet: nothing can be predicted (registering one predicts all).
     agenda_[i].collision = agenda_[i].crossing = Event{};
@@ -138,6 +139,12 @@ void Simulator::predict_relax(std::int32_t i, bool new_trajectory) {
     grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, consider);
   agenda_[i].collision = best;
   schedule(i);
+}
+
+template <>
+void EventDrivenEngine::predict_after_crossing<RelaxFlights>(std::int32_t i, int, int) {
+  // Relax trajectories are not straight relative to each other: predict everything again.
+  predict<RelaxFlights>(i);
 }
 
 }  // namespace carom

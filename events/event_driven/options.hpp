@@ -1,0 +1,31 @@
+#pragma once
+/// The settings of the event-driven engine that a scene gives ([flight], [collisions] collapse,
+/// [engine]).
+#include "core/flight_model.hpp"
+#include "events/laws/collapse.hpp"
+
+namespace carom {
+
+struct EventDrivenOptions {
+  /// How particles move between events: Ballistic or Relax. (Kick flights are ballistic here;
+  /// the kicks are the gas coupling's synchronising action, fluid/kick_scheme.hpp.)
+  FlightModel flight_model = FlightModel::Ballistic;
+  CollapseOptions collapse;   ///< TC model, low-speed elasticity, stall detector.
+  /// How species are split into grid levels: < 0 picks the split with the least expected
+  /// prediction work (default); > 0 gives a size its own level when it is below this ratio of
+  /// the level above; 0 puts everything in one grid.
+  double grid_level_ratio = -1.0;
+  /// Grid cells per largest diameter of a level (1..3): smaller cells mean fewer candidate
+  /// partners per prediction but more cell crossings and cell visits. 0 (default): chosen per
+  /// level by the grid's cost model (1 for a monodisperse system).
+  int grid_subdivision = 0;
+  /// Check the invariants at every collision (no overlap, momentum balance). On by default in
+  /// debug builds; costs a few percent.
+#ifdef NDEBUG
+  bool check_invariants = false;
+#else
+  bool check_invariants = true;
+#endif
+};
+
+}  // namespace carom

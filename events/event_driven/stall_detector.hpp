@@ -1,0 +1,59 @@
+#pragma once
+/// The collapse detector of the event-driven engine (DESIGN.md section 4): inelastic collapse
+/// (infinitely many collisions in finite time) or particles resting in lasting contact make the
+/// event rate diverge; the detector stops such a run with a diagnostic instead of letting it hang.
+#include <cstdint>
+#include <string>
+
+#include "core/vec3.hpp"
+#include "events/laws/collapse.hpp"
+
+namespace carom {
+
+/// One particle's count of collisions in its current stall window (kept in its agenda record).
+struct StallRecord {
+  double window_start = -kNever;  ///< Start of the window, s.
+  std::uint32_t count = 0;        ///< Collisions in that window.
+};
+
+/// Two tests: one particle takes part in more than `limit` collisions within `window`
+/// seconds of simulated time; or more than 10^6 + 100 N events in a row do not move time on.
+struct StallDetector {
+  double window = 0;          ///< Simulated window of the per-particle count, s.
+  std::uint64_t limit = 1000; ///< Collisions a particle may take part in within one window.
+  std::uint64_t events_without_progress = 0;  ///< Consecutive events at one time.
+
+  /// The window of `options`, or (when it is <= 0) 1e-9 of the collision time scale: the
+  /// smallest diameter d_min over max(rms speed, sqrt(|g| d_min)).
+  static double default_window(const CollapseOptions& options, double smallest_diameter,
+                               double rms_speed, double gravity);
+
+  /// Books one collision of a particle at time t (s) into its record; true when the particle
+  /// has now taken part in more than `limit` collisions within one window.
+  bool book(StallRecord& record, double t) const {
+    if (t - record.window_start > window) {
+      record.window_start = t;
+      record.count = 1;
+      return false;
+    }
+    return ++record.count > limit;
+  }
+  /// Books a particle event at time t (s), `last` the time of the previous one; true when more
+  /// than 10^6 + 100 `particles` events in a row have not moved time on.
+  bool stuck(double t, double last, std::size_t particles) {
+    if (t > last) {
+      events_without_progress = 0;
+      return false;
+    }
+    return ++events_without_progress > 1000000 + 100 * particles;
+  }
+};
+
+/// The diagnostic of a particle caught by StallDetector::book: who, where, with whom, and the
+/// remedies. `particle`, `partner`: descriptions ("particle 12 (species glass, at x y z m)").
+std::string collapse_diagnostic(double t, const std::string& particle, std::uint32_t count,
+                                double window, const std::string& partner);
+/// The diagnostic of a run caught by StallDetector::stuck.
+std::string stuck_diagnostic(double t, std::uint64_t events, const std::string& particle);
+
+}  // namespace carom

@@ -1,0 +1,96 @@
+#pragma once
+/// A collision method (DESIGN.md section 8): one way of moving particles and resolving their
+/// collisions, behind the small interface that the run loop, outputs, checkpoints, analysis,
+/// sweeps and the gas coupling are written against. The event-driven hard-sphere engine
+/// (events/event_driven/) is the first implementation; time-stepped methods (soft spheres,
+/// Monte Carlo collisions) implement the same calls, as each comment says.
+#include <csignal>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/hdf5.hpp"
+#include "core/relax_flight.hpp"
+#include "core/system.hpp"
+#include "events/statistics.hpp"
+
+namespace carom {
+
+/// Kinetic, potential and dissipated energy at the current time, J.
+struct Energies {
+  double translational = 0;  ///< sum m v^2 / 2.
+  double rotational = 0;     ///< sum I w^2 / 2.
+  double potential = 0;      ///< sum -m g . r (positions folded into the box).
+  double dissipated = 0;     ///< Lost in collisions since the start.
+  /// translational + rotational + potential + dissipated: constant in an exact run.
+  double total() const { return translational + rotational + potential + dissipated; }
+};
+
+/// What a synchronising action (the fluid step, a drag kick) sees and may change: every
+/// particle's state as of `time`.
+struct GlobalStep {
+  double time;                        ///< s.
+  ParticleStore& particles;           ///< States as of `time`; velocities may be changed.
+  /// Each particle's flight until the next step: the drag and pressure-gradient forces frozen
+  /// for one fluid step (RelaxFlight: rate K/m, drive). Event-driven relax flights fly them
+  /// exactly; a time-stepped method applies them as forces at each of its steps.
+  std::vector<RelaxFlight>& flights;
+};
+
+/// The interface a collision method offers the rest of carom. Particle indices are the
+/// method's own order (stable for the method's life; ids are in system().particles.id).
+class CollisionMethod {
+ public:
+  virtual ~CollisionMethod() = default;
+
+  /// The scene name of the method (`[method] kind`), e.g. "event_driven".
+  virtual std::string_view kind() const = 0;
+
+  /// Advances the run to time t_end, s. Returns true when it got there, false when the stop flag
+  /// was raised first (the run then stands at a consistent state that can be checkpointed and
+  /// resumed). Event-driven: processes every event up to t_end. Time-stepped: takes whole steps
+  /// and ends exactly at t_end (global events fall on step boundaries; t_end is one). Throws
+  /// InelasticCollapse (or the method's own failure, e.g. an unstable step) with a diagnostic.
+  virtual bool run_until(double t_end) = 0;
+  /// A flag (set by a signal handler) that run_until checks every few thousand events or steps.
+  virtual void set_stop_flag(const volatile std::sig_atomic_t* flag) = 0;
+
+  /// Registers `action` to run at first_time and then every interval seconds: it reads the run
+  /// (outputs, samples) and changes no particle. A saved run resumes it at its saved next time.
+  virtual void add_periodic_action(std::string name, double first_time, double interval,
+                                   std::function<void()> action) = 0;
+  /// Registers a synchronising action, the hook of the fluid step and of drag kicks: at
+  /// first_time + k interval every particle is brought to that time, `step` may change
+  /// velocities and flights, and the method goes on from the new state. Event-driven: predictions
+  /// never reach past the next one. Time-stepped: the step sizes are cut to land on it.
+  virtual void add_synchronising_action(std::string name, double first_time, double interval,
+                                        std::function<void(GlobalStep&)> step) = 0;
+
+  /// The current time, s.
+  virtual double time() const = 0;
+  /// Box, walls, species, laws, and the particles' constant properties (radius, mass, species,
+  /// id). Their dynamic state is read through position(i), velocity(i), spin(i).
+  virtual const System& system() const = 0;
+  std::size_t particle_count() const { return system().particles.size(); }
+  /// Particle i's position at the current time, m.
+  virtual Vec3 position(std::size_t i) const = 0;
+  /// Particle i's velocity at the current time, m/s.
+  virtual Vec3 velocity(std::size_t i) const = 0;
+  /// Particle i's spin at the current time, rad/s.
+  virtual Vec3 spin(std::size_t i) const = 0;
+  /// Energies at the current time (dissipated: since the start).
+  virtual Energies energies() const = 0;
+  /// Counters since the start: collisions per species pair and per wall (a time-stepped method
+  /// counts a collision when a contact begins), impulses, virial, dissipated energy, events
+  /// (time-stepped: steps).
+  virtual const RunStatistics& statistics() const = 0;
+
+  /// Writes everything needed to continue exactly (bit for bit) into `group` (a checkpoint):
+  /// the dynamic state, counters and clocks; the scene supplies the rest again. The group's
+  /// attributes "method" and "time" hold kind() and time().
+  virtual void save_state(const h5::Group& group) const = 0;
+};
+
+}  // namespace carom

@@ -1,0 +1,42 @@
+#pragma once
+/// Choosing a collision method (`[method] kind` of a scene) and building it, fresh or from a
+/// checkpoint. A new method adds its kind here and its folder under events/.
+#include <array>
+#include <memory>
+#include <string_view>
+
+#include "core/hdf5.hpp"
+#include "core/system.hpp"
+#include "events/event_driven/options.hpp"
+#include "events/method.hpp"
+
+namespace carom {
+
+/// The collision methods (DESIGN.md section 8).
+enum class MethodKind {
+  EventDriven,  ///< Exact flights and binary hard-sphere collisions (events/event_driven/).
+};
+
+/// The scene names of the methods, in MethodKind order.
+inline constexpr std::array<std::string_view, 1> kMethodNames{"event_driven"};
+
+/// What a scene says about its method: which one, and each method's own settings.
+struct MethodSettings {
+  MethodKind kind = MethodKind::EventDriven;
+  EventDrivenOptions event_driven;  ///< Flights, collapse remedies, grid (event_driven).
+};
+
+/// The scene name of a method.
+inline std::string_view method_name(MethodKind kind) { return kMethodNames[static_cast<int>(kind)]; }
+
+/// Builds the method for `system` (its particles as of their clocks). Throws
+/// std::invalid_argument when the system is not valid for it (overlaps, bad laws, ...).
+std::unique_ptr<CollisionMethod> make_method(System system, const MethodSettings& settings);
+
+/// Rebuilds a saved method (CollisionMethod::save_state wrote `saved`): `system` supplies box,
+/// walls, species and laws. Throws std::runtime_error when `saved` holds another method's state
+/// (naming both) or is incomplete.
+std::unique_ptr<CollisionMethod> restore_method(System system, const MethodSettings& settings,
+                                                const h5::Group& saved);
+
+}  // namespace carom

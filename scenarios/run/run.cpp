@@ -205,8 +205,6 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-bool stop_requested() { return g_stop != 0; }
-
 int run_scene(Scene scene, const RunOptions& options) {
   // Everything that can be wrong with a scene is found before the first file is created.
   build_initial_state(scene);

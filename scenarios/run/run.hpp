@@ -38,7 +38,5 @@ int resume_run(const std::string& dir, std::optional<double> end_time, bool quie
 
 /// Installs the SIGINT/SIGTERM handlers that ask the run loop to stop at the next chunk.
 void install_stop_handlers();
-/// True once SIGINT or SIGTERM arrived.
-bool stop_requested();
 
 }  // namespace carom

@@ -44,13 +44,6 @@ int SweepRanks::max(int value) const {
   return result;
 }
 
-std::int64_t SweepRanks::sum(std::int64_t value) const {
-  if (!initialised_) return value;
-  long long mine = value, result = 0;
-  MPI_Allreduce(&mine, &result, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
-  return result;
-}
-
 int SweepRanks::broadcast(int value) const {
   if (initialised_) MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
   return value;
@@ -70,9 +63,6 @@ SweepRanks::SweepRanks() {
 
 SweepRanks::~SweepRanks() = default;
 int SweepRanks::max(int value) const {
-  return value;
-}
-std::int64_t SweepRanks::sum(std::int64_t value) const {
   return value;
 }
 int SweepRanks::broadcast(int value) const {

@@ -29,8 +29,6 @@ class SweepRanks {
 
   /// Largest `value` over all ranks (every rank gets it; also a barrier).
   int max(int value) const;
-  /// Sum of `value` over all ranks (every rank gets it).
-  std::int64_t sum(std::int64_t value) const;
   /// Rank 0's `value`, on every rank.
   int broadcast(int value) const;
 

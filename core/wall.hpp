@@ -1,51 +1,74 @@
 #pragma once
-/// Fixed boundaries: infinite planes of any orientation and the inside of a vertical cylinder.
+/// Fixed boundaries: a closed set of shapes (core/walls/), each shape-dependent operation a visit
+/// over them, so that a new shape is one file and the compiler names every operation it lacks.
+/// Shapes: infinite planes of any orientation, the inside of a vertical cylinder.
 #include <string>
+#include <variant>
+#include <vector>
 
+#include "domain.hpp"
+#include "relax_flight.hpp"
 #include "vec3.hpp"
+#include "walls/cylinder.hpp"
+#include "walls/plane.hpp"
 
 namespace carom {
 
+/// The geometry of a wall: one of the shapes of core/walls/.
+using WallShape = std::variant<PlaneWall, CylinderWall>;
+
 /// A wall is a sphere of infinite mass and radius for the collision law.
 struct Wall {
-  enum class Shape { Plane, Cylinder };
-  Shape shape = Shape::Plane;
-  std::string name;          ///< Label used for collision counters and contact laws.
-  Vec3 point = Vec3::Zero(); ///< Plane: a point on it. Cylinder: a point on its axis (x, y used), m.
-  Vec3 normal = Vec3::UnitZ();  ///< Plane: unit normal pointing into the particles' side.
-  double radius = 0;         ///< Cylinder: inner radius R, m (axis along z, particles inside).
+  std::string name;  ///< Label used for collision counters and contact laws.
+  WallShape shape;   ///< Its geometry.
 
-  /// A plane through `point` whose unit normal (normalised here) points into the domain.
+  /// A plane through `point` (m) whose unit normal (normalised here) points into the domain.
   static Wall plane(std::string label, const Vec3& point, const Vec3& normal) {
-    Wall w;
-    w.shape = Shape::Plane;
-    w.name = std::move(label);
-    w.point = point;
-    w.normal = normal.normalized();
-    return w;
+    return Wall{std::move(label), PlaneWall{point, normal.normalized()}};
   }
-  /// The inside of a cylinder with axis parallel to z through (axis_x, axis_y).
+  /// The inside of a cylinder of radius `inner_radius` (m) with axis parallel to z through
+  /// (axis_x, axis_y) (m).
   static Wall cylinder(std::string label, double axis_x, double axis_y, double inner_radius) {
-    Wall w;
-    w.shape = Shape::Cylinder;
-    w.name = std::move(label);
-    w.point = Vec3(axis_x, axis_y, 0.0);
-    w.radius = inner_radius;
-    return w;
+    return Wall{std::move(label), CylinderWall{Vec3(axis_x, axis_y, 0.0), inner_radius}};
   }
-
   /// Gap between a sphere (centre r, radius a) and the wall surface: > 0 when apart, m.
   double gap(const Vec3& r, double a) const {
-    if (shape == Shape::Plane) return (r - point).dot(normal) - a;
-    const double dx = r.x() - point.x(), dy = r.y() - point.y();
-    return radius - std::sqrt(dx * dx + dy * dy) - a;
+    return std::visit([&](const auto& s) { return s.gap(r, a); }, shape);
   }
   /// Unit normal at the contact, pointing from the wall towards a sphere centred at r.
   Vec3 contact_normal(const Vec3& r) const {
-    if (shape == Shape::Plane) return normal;
-    Vec3 n(point.x() - r.x(), point.y() - r.y(), 0.0);
-    return n.normalized();
+    return std::visit([&](const auto& s) { return s.contact_normal(r); }, shape);
+  }
+  /// The shape and its dimensions in words, for `carom check` ("" for a plane).
+  std::string description() const {
+    return std::visit([](const auto& s) { return s.description(); }, shape);
   }
 };
+
+/// Earliest s >= 0 (s, from now) at which a sphere (centre r, m; velocity v, m/s; radius a, m)
+/// in a ballistic flight under gravity g (m/s^2) touches the wall while approaching; kNever if
+/// it does not. A sphere at or past contact by round-off and moving outward returns 0.
+inline double ballistic_wall_contact(const Wall& wall, const Vec3& r, const Vec3& v, double a,
+                                     const Vec3& g) {
+  return std::visit([&](const auto& s) { return s.ballistic_contact_time(r, v, a, g); },
+                    wall.shape);
+}
+
+/// Earliest s in [0, horizon] (s, from now; horizon finite, > 0) at which a sphere (centre r,
+/// velocity v, radius a) in the relax flight f touches the wall; never misses a contact within
+/// the horizon. kNever when it does not touch within the horizon.
+inline double relax_wall_contact(const Wall& wall, const Vec3& r, const Vec3& v, double a,
+                                 const RelaxFlight& f, double horizon) {
+  return std::visit([&](const auto& s) { return s.relax_contact_time(r, v, a, f, horizon); },
+                    wall.shape);
+}
+
+/// Throws std::invalid_argument (naming the wall) when a wall cannot be simulated under this
+/// gravity (m/s^2) in this domain: a cylinder needs gravity along its axis (z).
+inline void validate_walls(const std::vector<Wall>& walls, const Vec3& gravity,
+                           const Domain& domain) {
+  for (const Wall& wall : walls)
+    std::visit([&](const auto& s) { s.validate(wall.name, gravity, domain); }, wall.shape);
+}
 
 }  // namespace carom

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <variant>
 
 #include "overlap.hpp"
+#include "wall_cell_cut.hpp"
 
 namespace carom {
 
@@ -104,61 +106,31 @@ std::vector<CellShare> split_sphere(const CellLayout& layout, const std::array<b
 }
 
 std::vector<double> open_volume(const CellLayout& layout, const std::vector<Wall>& walls) {
-  // Axis-aligned planes clip the cell's box; the others are kept as half-spaces.
-  std::vector<int> axis(walls.size(), -1);
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    if (walls[w].shape != Wall::Shape::Plane) continue;
-    for (int k = 0; k < 3; ++k)
-      if (std::abs(walls[w].normal[k]) >= 1.0 - 1e-12) axis[w] = k;
-  }
   const Vec3 size = layout.cell_size();
   std::vector<double> open(layout.count(), 0.0);
-  std::vector<HalfSpace> cutting;
+  CellCut cell;
   for (int k = 0; k < layout.cells[2]; ++k)
     for (int j = 0; j < layout.cells[1]; ++j)
       for (int i = 0; i < layout.cells[0]; ++i) {
-        Vec3 lo = layout.lower + Vec3(i, j, k).cwiseProduct(size);
-        Vec3 hi = lo + size;
-        if (i == layout.cells[0] - 1) hi.x() = layout.upper.x();
-        if (j == layout.cells[1] - 1) hi.y() = layout.upper.y();
-        if (k == layout.cells[2] - 1) hi.z() = layout.upper.z();
-        for (std::size_t w = 0; w < walls.size(); ++w) {
-          const int a = axis[w];
-          if (a < 0) continue;
-          if (walls[w].normal[a] > 0.0)
-            lo[a] = std::max(lo[a], walls[w].point[a]);
-          else
-            hi[a] = std::min(hi[a], walls[w].point[a]);
-        }
-        if ((hi.array() <= lo.array()).any()) continue;
-        const double box = (hi - lo).prod();
-        double volume = box;
-        cutting.clear();
-        bool outside = false;
-        for (std::size_t w = 0; w < walls.size() && !outside; ++w) {
-          if (walls[w].shape != Wall::Shape::Plane || axis[w] >= 0) continue;
-          const HalfSpace h{walls[w].normal, walls[w].normal.dot(walls[w].point)};
-          double least = std::numeric_limits<double>::infinity(), most = -least;
-          for (int c = 0; c < 8; ++c) {
-            const Vec3 v(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z());
-            const double d = h.normal.dot(v) - h.offset;
-            least = std::min(least, d);
-            most = std::max(most, d);
-          }
-          if (most <= 0.0)
-            outside = true;
-          else if (least < 0.0)
-            cutting.push_back(h);
-        }
-        if (outside) continue;
-        if (!cutting.empty()) volume = box_halfspaces_volume(lo, hi, cutting);
-        for (const Wall& wall : walls) {
-          if (wall.shape != Wall::Shape::Cylinder) continue;
-          const double rectangle = (hi.x() - lo.x()) * (hi.y() - lo.y());
-          volume *= disk_rectangle_area(wall.point.x(), wall.point.y(), wall.radius, lo.x(), hi.x(),
-                                        lo.y(), hi.y()) /
-                    rectangle;
-        }
+        cell.lower = layout.lower + Vec3(i, j, k).cwiseProduct(size);
+        cell.upper = cell.lower + size;
+        if (i == layout.cells[0] - 1) cell.upper.x() = layout.upper.x();
+        if (j == layout.cells[1] - 1) cell.upper.y() = layout.upper.y();
+        if (k == layout.cells[2] - 1) cell.upper.z() = layout.upper.z();
+        cell.cutting.clear();
+        cell.outside = false;
+        for (const Wall& wall : walls)
+          std::visit([&](const auto& shape) { clip_cell(shape, cell); }, wall.shape);
+        if ((cell.upper.array() <= cell.lower.array()).any()) continue;
+        double volume = (cell.upper - cell.lower).prod();
+        for (std::size_t w = 0; w < walls.size() && !cell.outside; ++w)
+          std::visit([&](const auto& shape) { cut_cell(shape, cell); }, walls[w].shape);
+        if (cell.outside) continue;
+        if (!cell.cutting.empty())
+          volume = box_halfspaces_volume(cell.lower, cell.upper, cell.cutting);
+        for (const Wall& wall : walls)
+          volume *= std::visit([&](const auto& shape) { return inside_fraction(shape, cell); },
+                               wall.shape);
         open[layout.index(i, j, k)] = volume;
       }
   return open;

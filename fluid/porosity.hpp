@@ -55,9 +55,10 @@ std::vector<CellShare> split_sphere(const CellLayout& layout, const std::array<b
                                     const Vec3& centre, double radius);
 
 /// Volume of each cell inside all the walls (planes: the side their normal points to; cylinder:
-/// the inside), m^3. Exact for cells cut by any planes (axis-aligned ones clip the cell, others by
-/// convex clipping) or by one cylinder plus axis-aligned planes; a cell cut both by a cylinder
-/// and by an oblique plane, or by two cylinders, gets the product of the inside fractions.
+/// the inside), m^3; how each shape cuts a cell is in wall_cell_cut.hpp. Exact for cells cut by
+/// any planes (axis-aligned ones clip the cell, others by convex clipping) or by one cylinder plus
+/// axis-aligned planes; a cell cut both by a cylinder and by an oblique plane, or by two
+/// cylinders, gets the product of the inside fractions.
 std::vector<double> open_volume(const CellLayout& layout, const std::vector<Wall>& walls);
 
 /// Solid volume and porosity of every cell.

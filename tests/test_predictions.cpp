@@ -1,13 +1,13 @@
-// EventDrivenEngine predictions (events/predict.cpp) against brute-force integration of the trajectories.
+// EventDrivenEngine predictions (events/event_driven/*_predictions.cpp) against brute-force integration of the trajectories.
 //
-// Small systems (2-4 particles, box walls, an inclined plane, a Wall::cylinder, gravity, periodic
-// boxes, sizes 1:5) are built; the simulator processes its cell crossings until its earliest
-// predicted event is a collision (EventDrivenEngine::predicted_events()). The oracle integrates every
-// trajectory exactly from the initial state and finds, for every pair and particle-wall couple,
-// the first time its gap falls below -tol by conservative advancement: it steps by
-// (gap + tol) / L, where L bounds |d gap / dt| on the horizon, so it can never step over a
-// contact. Tolerance tol = 1e-10 of the contact distance: the overlap the engine promises never
-// to exceed (DESIGN.md section 3); predicted times carry round-off ~1e-15, i.e. gaps ~1e-14.
+// Small systems (2-4 particles, box walls, an inclined plane, a Wall::cylinder, gravity,
+// periodic boxes, sizes 1:5) are built; the simulator processes its cell crossings until
+// its earliest predicted event is a collision (EventDrivenEngine::predicted_events()). The oracle
+// integrates every trajectory exactly from the initial state and finds, for every pair and
+// particle-wall couple, the first time its gap falls below -tol by conservative advancement: it
+// steps by (gap + tol) / L, where L bounds |d gap / dt| on the horizon, so it can never step
+// over a contact. Tolerance tol = 1e-10 of the contact distance: the overlap the engine promises
+// never to exceed (DESIGN.md section 3); predicted times carry round-off ~1e-15, i.e. gaps ~1e-14.
 //   No missed event: the engine's first collision is no later than the first overlap.
 //   No spurious event: the gap of the engine's collision partner is zero (|gap| <= 1e-9 contact)
 //   at the predicted time, and approaching.
@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <variant>
 
 #include "core/rng.hpp"
 #include "core/roots.hpp"
@@ -78,12 +79,19 @@ struct Oracle {
   double pair_rate_bound(std::size_t i, std::size_t j) const {
     return (v0[i] - v0[j]).norm();  // gravity cancels
   }
+  // Bound on |d gap / ds| over the horizon, per shape.
+  struct WallRateBound {
+    const Vec3& v;
+    const Vec3& g;
+    double horizon;
+    double operator()(const PlaneWall& plane) const {
+      return std::abs(v.dot(plane.normal)) + std::abs(g.dot(plane.normal)) * horizon;
+    }
+    double operator()(const CylinderWall&) const { return std::hypot(v.x(), v.y()); }
+  };
   double wall_rate_bound(std::size_t i, std::size_t w) const {
-    const Wall& wall = sim.system().walls[w];
-    const Vec3& v = v0[i];
-    const Vec3& g = sim.system().flight.gravity;
-    if (wall.shape == Wall::Shape::Cylinder) return std::hypot(v.x(), v.y());
-    return std::abs(v.dot(wall.normal)) + std::abs(g.dot(wall.normal)) * horizon;
+    return std::visit(WallRateBound{v0[i], sim.system().flight.gravity, horizon},
+                      sim.system().walls[w].shape);
   }
   // First time in [0, horizon] at which gap < -tol (kNever if none).
   double first_overlap(const std::function<double(double)>& gap, double rate, double tol) const {

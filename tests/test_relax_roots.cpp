@@ -22,6 +22,7 @@
 #include <limits>
 #include <vector>
 
+#include "contact_oracle.hpp"
 #include "core/ballistic_flight.hpp"
 #include "core/relax_roots.hpp"
 #include "core/rng.hpp"
@@ -125,66 +126,13 @@ TEST(RelaxFlight, MatchesFineRk4Integration) {
   }
 }
 
-// --- the brute-force oracle ----------------------------------------------------------------
+// --- the brute-force oracle (contact_oracle.hpp) --------------------------------------------
 
-struct Sample {
-  double value, slope;
-};
-using GapFunction = std::function<Sample(double)>;
-
-// Earliest s in (0, end] where G (G(0) > 0) reaches zero, scanning `cells` grid cells.
-double brute_force_contact(const GapFunction& G, double end, int cells) {
-  auto bisect = [&](double lo, double hi, auto&& below) {
-    for (int it = 0; it < 200; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid <= lo || mid >= hi) break;
-      (below(mid) ? hi : lo) = mid;
-    }
-    return hi;
-  };
-  auto closed = [&](double s) { return G(s).value <= 0.0; };
-  Sample previous = G(0.0);
-  double s_previous = 0.0;
-  for (int i = 1; i <= cells; ++i) {
-    const double s = end * i / cells;
-    const Sample here = G(s);
-    if (here.value <= 0.0) return bisect(s_previous, s, closed);
-    if (previous.slope < 0.0 && here.slope > 0.0) {  // a minimum inside the cell: deep enough?
-      const double m = bisect(s_previous, s, [&](double t) { return G(t).slope > 0.0; });
-      if (G(m).value <= 0.0) return bisect(s_previous, m, closed);
-    }
-    previous = here;
-    s_previous = s;
-  }
-  return kNever;
-}
-
-struct Agreement {
-  int cases = 0, hits = 0, misses = 0;
-  double worst_error = 0.0;  // |s - s_brute| / tolerance
-};
-
-// Compares a predicted time with the oracle; `tolerance(s_brute)` in s. Also: no overlap
-// beyond 1e-12 of `length` at the predicted time, and the objects approach there.
-void compare(Agreement& stats, const GapFunction& G, double predicted, double brute,
-             double tolerance, double length, const char* family, int trial) {
-  SCOPED_TRACE(::testing::Message() << family << " case " << trial << ": predicted " << predicted
-                                    << " s, brute force " << brute << " s");
-  ++stats.cases;
-  if (brute == kNever) {
-    ++stats.misses;
-    EXPECT_EQ(predicted, kNever) << "spurious contact";
-    return;
-  }
-  ++stats.hits;
-  ASSERT_NE(predicted, kNever) << "missed contact";
-  const double error = std::abs(predicted - brute);
-  stats.worst_error = std::max(stats.worst_error, error / tolerance);
-  EXPECT_LE(error, tolerance);
-  const Sample at = G(predicted);
-  EXPECT_GE(at.value, -1e-12 * length) << "overlap at the predicted time";
-  EXPECT_LE(at.slope, 0.0) << "not approaching at the predicted time";
-}
+using test::Agreement;
+using test::brute_force_contact;
+using test::compare;
+using test::GapFunction;
+using test::Sample;
 
 // --- 1-D gaps --------------------------------------------------------------------------------
 

@@ -10,21 +10,8 @@ namespace carom {
 
 double EventDrivenEngine::wall_time(std::int32_t i, const Wall& wall) const {
   const HotState& p = hot_[i];
-  const Vec3& r = p.position;
-  const Vec3& v = p.velocity;
-  double s;
-  if (wall.shape == Wall::Shape::Plane) {
-    // Gap h(s) = h0 + (v.n) s + (g.n) s^2/2; contact when h falls through zero.
-    const double gap = (r - wall.point).dot(wall.normal) - p.radius;
-    s = first_upward_crossing(-0.5 * system_.flight.gravity.dot(wall.normal), -v.dot(wall.normal), -gap);
-  } else {
-    // Horizontal motion is linear (gravity is along the axis): |d + u s|^2 = (R - a)^2.
-    const double dx = r.x() - wall.point.x(), dy = r.y() - wall.point.y();
-    const double reach = wall.radius - p.radius;
-    s = first_upward_crossing(v.x() * v.x() + v.y() * v.y(), 2.0 * (dx * v.x() + dy * v.y()),
-                              dx * dx + dy * dy - reach * reach);
-  }
-  return p.clock + s;
+  return p.clock +
+         ballistic_wall_contact(wall, p.position, p.velocity, p.radius, system_.flight.gravity);
 }
 
 Event EventDrivenEngine::cell_crossing(std::int32_t i) const {

@@ -45,10 +45,7 @@ void validate_system(const System& system, FlightModel flight_model) {
       throw std::invalid_argument("species '" + s.name +
                                   "' is fixed: under gravity that needs relax flights (each "
                                   "particle its own flight); ballistic flights share one gravity");
-  for (const Wall& wall : system.walls)
-    if (wall.shape == Wall::Shape::Cylinder && (g.x() != 0.0 || g.y() != 0.0))
-      throw std::invalid_argument("wall '" + wall.name +
-                                  "': a cylinder's axis is along z, so gravity must be along z too");
+  validate_walls(system.walls, g, system.domain);
   validate_initial_state(system);
 }
 }  // namespace

@@ -60,18 +60,9 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
 
 double EventDrivenEngine::relax_wall_time(std::int32_t i, const Wall& wall, double limit) const {
   const HotState& p = hot_[i];
-  const RelaxFlight& f = flights_[i];
   const double horizon = std::min(horizon_, limit) - p.clock;
   if (!(horizon > 0.0)) return kNever;
-  double s;
-  if (wall.shape == Wall::Shape::Plane) {
-    const double gap = (p.position - wall.point).dot(wall.normal) - p.radius;
-    s = relax_gap_closing_time(gap, p.velocity.dot(wall.normal), f.drive.dot(wall.normal), f.rate,
-                               horizon);
-  } else {
-    s = relax_cylinder_contact_time(p.position - wall.point, p.velocity, f, wall.radius - p.radius,
-                                    horizon);
-  }
+  const double s = relax_wall_contact(wall, p.position, p.velocity, p.radius, flights_[i], horizon);
   return s == kNever ? kNever : p.clock + s;
 }
 

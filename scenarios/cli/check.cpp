@@ -104,7 +104,10 @@ std::string describe_scene(const Scene& scene) {
       any_periodic = true;
     }
   out << (any_periodic ? "" : " none") << "\n  walls:";
-  for (const Wall& w : system.walls) out << " " << w.name << (w.shape == Wall::Shape::Cylinder ? " (cylinder)" : "");
+  for (const Wall& w : system.walls) {
+    const std::string shape = w.description();
+    out << " " << w.name << (shape.empty() ? "" : " (" + shape + ")");
+  }
   out << (W ? "" : " none") << "\n  gravity: " << vec(system.flight.gravity) << " m/s^2\n";
 
   std::vector<std::size_t> count(S, 0);

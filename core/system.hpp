@@ -41,7 +41,7 @@ inline constexpr double kContactTolerance = 1e-10;
 /// pokes through a wall or lies outside the box, or any state is not finite. O(N) with a grid.
 /// `overlap_tolerance`: relative overlap accepted (see kContactTolerance); 0 is strict, as used
 /// for freshly placed and listed particles. The default is what the engine accepts mid-run, and
-/// is what the Simulator checks at its start.
+/// is what the event-driven engine checks at its start.
 void validate_initial_state(const System& system, double overlap_tolerance = kContactTolerance);
 
 }  // namespace carom

@@ -15,4 +15,13 @@ void read_method(TableReader& root, Scene& scene) {
   m->finish();
 }
 
+void read_engine(TableReader& root, Scene& scene) {
+  if (auto e = root.table("engine")) {
+    scene.method.event_driven.grid_level_ratio = e->number("grid_level_ratio", scene.method.event_driven.grid_level_ratio,
+                                               Range{0.0, 1.0, false, true, "size ratio that starts a new grid level (0: one grid)"});
+    scene.method.event_driven.check_invariants = e->boolean("check_invariants", scene.method.event_driven.check_invariants);
+    e->finish();
+  }
+}
+
 }  // namespace carom

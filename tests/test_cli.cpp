@@ -17,6 +17,7 @@
 #include <string>
 #include <thread>
 
+#include "core/hdf5.hpp"
 #include "scenarios/run/run_output.hpp"
 #include "checkpoint_support.hpp"
 
@@ -207,6 +208,24 @@ TEST_F(Cli, ResumeAfterEndTimeIsBitForBit) {
   ASSERT_EQ(carom("resume split --end 4.0 --quiet"), 0) << out_;
   expect_identical(read_checkpoint((dir_ / "whole" / "checkpoint.h5").string()),
                    read_checkpoint((dir_ / "split" / "checkpoint.h5").string()));
+}
+
+// A checkpoint names the method whose state it holds; resuming it with a scene of another method
+// is refused (exit 2) with both names, before anything is written.
+TEST_F(Cli, ResumeRefusesAnotherMethodsState) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  ASSERT_EQ(carom("run " + gas + " --out a --quiet --set time.end=1.0"), 0) << out_;
+  const std::string checkpoint = (dir_ / "a" / "checkpoint.h5").string();
+  {
+    const h5::File file = h5::File::open(checkpoint, true);
+    EXPECT_EQ(file.open_group("state").attribute<std::string>("method"), "event_driven");
+    file.open_group("state").set_attribute("method", std::string("soft_sphere"));
+  }
+  const std::string summary_before = read(dir_ / "a" / "summary.json");
+  EXPECT_EQ(carom("resume a --end 2.0 --quiet"), 2) << out_;
+  EXPECT_NE(out_.find("method 'soft_sphere'"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("'event_driven'"), std::string::npos) << out_;
+  EXPECT_EQ(read(dir_ / "a" / "summary.json"), summary_before) << "nothing already written is lost";
 }
 
 TEST_F(Cli, ResumeAfterSigintIsBitForBit) {

@@ -144,6 +144,20 @@ TEST(SceneErrors, WrongChoiceSuggestsClosest) {
                {"bad.toml:12", "collisions.collapse.model = \"tcc\"", "one of \"none\", \"tc\"", "did you mean \"tc\""});
 }
 
+// [method] selects the collision method by name; the default is the event-driven engine, and a
+// name that is not a method is refused with the file, line, key and the allowed names.
+TEST(Scene, MethodKindDefaultsToEventDriven) {
+  EXPECT_EQ(parse_scene(kBase, "good.toml").method.kind, MethodKind::EventDriven);
+  EXPECT_EQ(parse_scene(kBase + "[method]\nkind = \"event_driven\"\n", "good.toml").method.kind,
+            MethodKind::EventDriven);
+}
+
+TEST(SceneErrors, UnknownMethodNamed) {
+  expect_error(kBase + "[method]\nkind = \"event-driven\"\n",
+               {"bad.toml:12", "method.kind", "\"event_driven\"", "did you mean \"event_driven\""});
+  expect_error(kBase + "[method]\nkind = \"event_driven\"\nstep = 1e-5\n", {"bad.toml:13", "step"});
+}
+
 TEST(SceneErrors, FlightAndGasMustFit) {
   expect_error(kBase + "[flight]\nmodel = \"relax\"\n",
                {"bad.toml:12", "flight.model = \"relax\"", "needs a gas", "[gas]"});

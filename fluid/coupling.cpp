@@ -1,9 +1,8 @@
 #include "coupling.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "drag.hpp"
 #include "gas_solver.hpp"
@@ -293,33 +292,6 @@ double GasCoupling::mean_porosity_at(std::uint32_t s) const {
 Vec3 GasCoupling::mean_gas_velocity_at(std::uint32_t s) const {
   if (s >= species_count_.size() || species_count_[s] == 0) return Vec3::Zero();
   return species_gas_velocity_[s] / static_cast<double>(species_count_[s]);
-}
-
-void GasCoupling::check_kick_stability(double dt_p, const ParticleStore& particles,
-                                       const std::vector<RelaxFlight>& flights) const {
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (flights[i].rate * dt_p <= 2.0) continue;
-    const double tau = 1.0 / flights[i].rate;
-    std::ostringstream out;
-    out << "kick flights are unstable: particle " << particles.id[i]
-        << " has a drag relaxation time tau = m/K = " << tau
-        << " s, and the particle step dt_p = " << dt_p
-        << " s exceeds 2 tau: each explicit drag kick overshoots the gas velocity by a factor |1 - "
-           "dt_p/tau| = "
-        << std::abs(1.0 - dt_p / tau)
-        << " > 1, so velocities grow without bound. Remedy: flight.model = \"relax\" (exact for "
-           "any step), or "
-           "flight.particle_step below "
-        << 2.0 * tau << " s (tau / 5 or less for first-order accuracy).";
-    throw KickUnstable(out.str());
-  }
-}
-
-void GasCoupling::kick(double dt_p, ParticleStore& particles,
-                       const std::vector<RelaxFlight>& flights) const {
-  check_kick_stability(dt_p, particles, flights);
-  for (std::size_t i = 0; i < particles.size(); ++i)
-    particles.velocity[i] += dt_p * (flights[i].acceleration(particles.velocity[i]) - gravity_);
 }
 
 std::vector<Vec3> GasCoupling::velocity_field() const {

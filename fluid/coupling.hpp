@@ -31,6 +31,9 @@
 namespace carom {
 
 class DragClosure;
+namespace h5 {
+class Group;
+}  // namespace h5
 
 /// Time spent in each part of the fluid steps, s of wall time (cumulative).
 struct CouplingTimes {
@@ -96,8 +99,21 @@ class GasCoupling {
   /// The gas solver's report of the last step (iterations, convergence, mass imbalance).
   const GasStepReport& last_report() const { return last_report_; }
 
-  /// Gas state for checkpoints: every array the next step depends on, as plain doubles.
+  /// Writes the coupling's checkpoint into `group` (new datasets, one per array, doubles as
+  /// native doubles): everything the next step and the outputs after it depend on (layout in
+  /// fluid/coupling_state.cpp).
+  void save(const h5::Group& group) const;
+  /// Restores a save() of a coupling built from the same scene: the following steps reproduce
+  /// the saved coupling's bit for bit. Throws std::invalid_argument naming the dataset and the
+  /// shape expected when one is missing or does not fit this grid or species count.
+  void restore(const h5::Group& group);
+
+  /// Transitional: the same checkpoint as one positional vector (the format that
+  /// scenarios/run/checkpoint.cpp stores in /gas/state), until checkpoint.cpp calls
+  /// save(group); remove then.
   std::vector<double> save() const;
+  /// Transitional: restores a save() vector; throws std::invalid_argument if its size does not
+  /// fit this grid and species count.
   void restore(const std::vector<double>& state);
 
  private:

@@ -148,8 +148,9 @@ void GasCoupling::step(double t, const ParticleStore& particles,
       solver_->set_inlet_profile(s, scaled_profile(s, t_new));
   }
   const std::vector<double> gas_porosity = two_way ? porosity_ : std::vector<double>(cells, 1.0);
-  last_report_ = solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
-  if (!last_report_.converged) ++times_.unconverged_steps;
+  const GasStepReport report =
+      solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
+  if (!report.converged) ++times_.unconverged_steps;
   times_.solve += seconds_since(start);
 
   start = std::chrono::steady_clock::now();

@@ -62,7 +62,6 @@ class GasCoupling {
   const GasSettings& settings() const { return settings_; }
   /// Inlet superficial velocity of side s at time t (the ramp applied), m/s.
   double inlet_velocity(int side, double t) const;
-  const GasSolver& solver() const { return *solver_; }
   /// Porosity of each gas cell at the last step.
   const std::vector<double>& porosity() const { return porosity_; }
   /// Gas volume available in each cell (inside the walls), m^3.
@@ -96,8 +95,6 @@ class GasCoupling {
   /// Sum of the drag forces on the particles at the last step, N.
   const Vec3& total_drag() const { return total_drag_; }
   const CouplingTimes& times() const { return times_; }
-  /// The gas solver's report of the last step (iterations, convergence, mass imbalance).
-  const GasStepReport& last_report() const { return last_report_; }
 
   /// Writes the coupling's checkpoint into `group` (new datasets, one per array, doubles as
   /// native doubles): everything the next step and the outputs after it depend on (layout in
@@ -132,7 +129,6 @@ class GasCoupling {
   std::unique_ptr<GasSolver> solver_;
   std::unique_ptr<DragClosure> closure_;
   std::array<std::vector<double>, 6> jet_profiles_;  ///< Inlet sides with jets: full profile, m/s.
-  GasStepReport last_report_;
   CellLayout layout_;
   std::vector<double> open_volume_;
   std::vector<double> porosity_;

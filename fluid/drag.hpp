@@ -148,13 +148,6 @@ class DragClosure {
   /// buoyant weight), i.e. per particle K u = eps V_p (rho_p - rho_g) g.
   double minimum_fluidization_velocity(const DragInput& in, double bed_porosity) const;
 
-  /// The closure selected.
-  DragClosureKind kind() const { return kind_; }
-  /// eps_mf used for the Richardson-Zaki exponent, dimensionless.
-  double fluidization_porosity() const { return fluidization_porosity_; }
-  /// |g|, m/s^2.
-  double gravity() const { return gravity_; }
-
  private:
   DragClosureKind kind_;
   double fluidization_porosity_;

@@ -213,8 +213,6 @@ class GasSolver {
   const std::vector<double>& face_velocity(int axis) const { return velocity_[axis]; }
   /// Number of faces of `axis` along each axis.
   std::array<int, 3> face_counts(int axis) const;
-  /// Porosity of the last step (the old porosity of the next one), dimensionless.
-  const std::vector<double>& porosity() const { return old_porosity_; }
   /// Largest continuity residual of a cell, (d(eps V)/dt + net outflow), over the largest volume
   /// flow through a face (of the last step's final velocities), dimensionless.
   double mass_imbalance() const { return mass_imbalance_; }
@@ -225,8 +223,6 @@ class GasSolver {
   /// leaves); 0 on closed and periodic sides. With the gas's weight it is what separates the
   /// pressure drop across the grid from the force of the gas on the particles.
   double momentum_inflow(int side) const;
-  /// The grid.
-  const GasGrid& grid() const { return grid_; }
 
   /// The state the next step depends on besides its inputs (a copy).
   GasSolverState state() const;

@@ -1,9 +1,8 @@
 #include "coupling.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "drag.hpp"
 #include "gas_solver.hpp"
@@ -97,52 +96,6 @@ void GasCoupling::prepare(const ParticleStore& particles) {
   map_particles(particles);
 }
 
-std::vector<double> GasCoupling::save() const {
-  std::vector<double> state = solver_->save_state();
-  state.insert(state.end(), porosity_.begin(), porosity_.end());
-  state.insert(state.end(), sauter_.begin(), sauter_.end());
-  // What the last step's flights were set from, per species (count, gas velocity, gas force,
-  // porosity) and in total, so that outputs after a resume read what they would have read.
-  const std::size_t species = species_density_.size();
-  for (std::size_t s = 0; s < species; ++s) {
-    const bool seen = s < species_count_.size();
-    const Vec3 u = seen ? species_gas_velocity_[s] : Vec3::Zero();
-    const Vec3 f = seen ? species_gas_force_[s] : Vec3::Zero();
-    state.insert(state.end(), {seen ? static_cast<double>(species_count_[s]) : 0.0, u.x(), u.y(),
-                               u.z(), f.x(), f.y(), f.z(), seen ? species_porosity_[s] : 0.0});
-  }
-  state.insert(state.end(), {total_drag_.x(), total_drag_.y(), total_drag_.z()});
-  return state;
-}
-
-void GasCoupling::restore(const std::vector<double>& state) {
-  const std::size_t cells = porosity_.size();
-  const std::size_t species = species_density_.size();
-  const std::size_t tail = 2 * cells + 8 * species + 3;
-  if (state.size() < tail)
-    throw std::invalid_argument("gas state: " + std::to_string(state.size()) +
-                                " values, too few for " + std::to_string(cells) + " cells and " +
-                                std::to_string(species) + " species");
-  const std::size_t solver_size = state.size() - tail;
-  solver_->restore_state(std::span<const double>(state.data(), solver_size));
-  auto at = state.begin() + static_cast<std::ptrdiff_t>(solver_size);
-  std::copy(at, at + static_cast<std::ptrdiff_t>(cells), porosity_.begin());
-  at += static_cast<std::ptrdiff_t>(cells);
-  std::copy(at, at + static_cast<std::ptrdiff_t>(cells), sauter_.begin());
-  at += static_cast<std::ptrdiff_t>(cells);
-  species_count_.assign(species, 0);
-  species_gas_velocity_.assign(species, Vec3::Zero());
-  species_gas_force_.assign(species, Vec3::Zero());
-  species_porosity_.assign(species, 0.0);
-  for (std::size_t s = 0; s < species; ++s, at += 8) {
-    species_count_[s] = static_cast<std::size_t>(at[0]);
-    species_gas_velocity_[s] = Vec3(at[1], at[2], at[3]);
-    species_gas_force_[s] = Vec3(at[4], at[5], at[6]);
-    species_porosity_[s] = at[7];
-  }
-  total_drag_ = Vec3(at[0], at[1], at[2]);
-}
-
 GasCoupling::~GasCoupling() = default;
 
 double GasCoupling::inlet_velocity(int side, double t) const {
@@ -195,8 +148,9 @@ void GasCoupling::step(double t, const ParticleStore& particles,
       solver_->set_inlet_profile(s, scaled_profile(s, t_new));
   }
   const std::vector<double> gas_porosity = two_way ? porosity_ : std::vector<double>(cells, 1.0);
-  last_report_ = solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
-  if (!last_report_.converged) ++times_.unconverged_steps;
+  const GasStepReport report =
+      solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
+  if (!report.converged) ++times_.unconverged_steps;
   times_.solve += seconds_since(start);
 
   start = std::chrono::steady_clock::now();
@@ -293,33 +247,6 @@ double GasCoupling::mean_porosity_at(std::uint32_t s) const {
 Vec3 GasCoupling::mean_gas_velocity_at(std::uint32_t s) const {
   if (s >= species_count_.size() || species_count_[s] == 0) return Vec3::Zero();
   return species_gas_velocity_[s] / static_cast<double>(species_count_[s]);
-}
-
-void GasCoupling::check_kick_stability(double dt_p, const ParticleStore& particles,
-                                       const std::vector<RelaxFlight>& flights) const {
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (flights[i].rate * dt_p <= 2.0) continue;
-    const double tau = 1.0 / flights[i].rate;
-    std::ostringstream out;
-    out << "kick flights are unstable: particle " << particles.id[i]
-        << " has a drag relaxation time tau = m/K = " << tau
-        << " s, and the particle step dt_p = " << dt_p
-        << " s exceeds 2 tau: each explicit drag kick overshoots the gas velocity by a factor |1 - "
-           "dt_p/tau| = "
-        << std::abs(1.0 - dt_p / tau)
-        << " > 1, so velocities grow without bound. Remedy: flight.model = \"relax\" (exact for "
-           "any step), or "
-           "flight.particle_step below "
-        << 2.0 * tau << " s (tau / 5 or less for first-order accuracy).";
-    throw KickUnstable(out.str());
-  }
-}
-
-void GasCoupling::kick(double dt_p, ParticleStore& particles,
-                       const std::vector<RelaxFlight>& flights) const {
-  check_kick_stability(dt_p, particles, flights);
-  for (std::size_t i = 0; i < particles.size(); ++i)
-    particles.velocity[i] += dt_p * (flights[i].acceleration(particles.velocity[i]) - gravity_);
 }
 
 std::vector<Vec3> GasCoupling::velocity_field() const {

@@ -203,9 +203,6 @@ DragClosure::DragClosure(DragClosureKind kind, double fluidization_porosity, dou
                                 " must lie strictly between 0 and 1 (typically 0.4 to 0.5)");
 }
 
-DragClosure::DragClosure(std::string_view name, double fluidization_porosity, double gravity)
-    : DragClosure(parse_drag_closure(name), fluidization_porosity, gravity) {}
-
 double DragClosure::drag_coefficient(const DragInput& in) const {
   switch (kind_) {
     case DragClosureKind::SchillerNaumann: {

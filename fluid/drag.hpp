@@ -128,14 +128,11 @@ struct RichardsonZaki {
 /// n, U_t and U_mf for a particle (in: diameter, densities, viscosity) and eps_mf.
 RichardsonZaki richardson_zaki(const DragInput& in, double fluidization_porosity, double gravity);
 
-/// A closure chosen by name with its parameters: what the coupling calls per particle.
+/// A closure chosen by kind with its parameters: what the coupling calls per particle.
 class DragClosure {
  public:
   /// `fluidization_porosity`: eps_mf of the Richardson-Zaki exponent; `gravity`: |g|, m/s^2.
   explicit DragClosure(DragClosureKind kind, double fluidization_porosity = 0.4,
-                       double gravity = 9.81);
-  /// Same, the closure given by its scene name (throws std::invalid_argument).
-  explicit DragClosure(std::string_view name, double fluidization_porosity = 0.4,
                        double gravity = 9.81);
 
   /// K of one particle, kg/s: drag force K (u - v), relaxation time m / K.
@@ -150,13 +147,6 @@ class DragClosure {
   /// beta u / eps = (1 - eps)(rho_p - rho_g) g (the frictional pressure gradient carries the
   /// buoyant weight), i.e. per particle K u = eps V_p (rho_p - rho_g) g.
   double minimum_fluidization_velocity(const DragInput& in, double bed_porosity) const;
-
-  /// The closure selected.
-  DragClosureKind kind() const { return kind_; }
-  /// eps_mf used for the Richardson-Zaki exponent, dimensionless.
-  double fluidization_porosity() const { return fluidization_porosity_; }
-  /// |g|, m/s^2.
-  double gravity() const { return gravity_; }
 
  private:
   DragClosureKind kind_;

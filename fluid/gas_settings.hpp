@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "drag.hpp"
+
 namespace carom {
 
 /// How the gas and the particles act on each other (DESIGN.md section 5).
@@ -36,11 +38,11 @@ struct GasSide {
 
 struct GasSettings {
   CouplingLevel coupling = CouplingLevel::None;
-  double density = 1.2;                    ///< rho_g, kg/m^3.
-  double viscosity = 1.8e-5;               ///< mu_g, Pa s.
-  std::array<int, 3> cells{1, 1, 1};       ///< Gas cells per axis.
-  double time_step = 1e-4;                 ///< Fluid step dt, s.
-  std::string closure = "gidaspow_blend";  ///< Drag closure name (see fluid/drag.hpp).
+  double density = 1.2;                                      ///< rho_g, kg/m^3.
+  double viscosity = 1.8e-5;                                 ///< mu_g, Pa s.
+  std::array<int, 3> cells{1, 1, 1};                         ///< Gas cells per axis.
+  double time_step = 1e-4;                                   ///< Fluid step dt, s.
+  DragClosureKind closure = DragClosureKind::GidaspowBlend;  ///< Drag closure (fluid/drag.hpp).
   double fluidization_porosity =
       0.4;                       ///< eps_mf of the Richardson-Zaki exponent (schiller_naumann).
   double min_porosity = 0.2;     ///< Porosity floor of the mapping (round-off in packed cells).

@@ -140,6 +140,21 @@ struct GasStepReport {
   double mass_imbalance = 0.0;
 };
 
+/// Everything a GasSolver's next step depends on besides that step's inputs (for checkpoints):
+/// GasSolver::set_state(state()) on a solver of the same grid and boundaries reproduces the
+/// following steps bit for bit.
+struct GasSolverState {
+  /// Per axis, the interstitial velocity normal to each face of that axis (laid out as
+  /// GasSolver::face_velocity), m/s.
+  std::array<std::vector<double>, 3> face_velocity;
+  std::vector<double> pressure;  ///< Per cell (x fastest, then y, then z), Pa.
+  /// Per cell, the porosity of the last step (the old porosity of the next one); empty before
+  /// the first step (which then has d eps/dt = 0), dimensionless.
+  std::vector<double> previous_porosity;
+  /// Per axis, per face: the inlet drop (GasSolver::inlet_drop; 0 off inlet faces), Pa.
+  std::array<std::vector<double>, 3> inlet_drop;
+};
+
 /// The gas of one grid: face velocities and cell pressures, advanced one implicit step at a time
 /// with the porosity, drag coefficient and solid velocity of each cell given by the caller.
 class GasSolver {
@@ -186,6 +201,8 @@ class GasSolver {
   /// no equation at the face, whose velocity is given): eps (p_face - p_c) = +-h/2 [beta (u_face
   /// - v_s) - eps rho_g g] along the face's axis (+ on a low side). 0 on other faces.
   double inlet_drop(int axis, int face) const { return inlet_drop_[axis][face]; }
+  /// Whether a face lies on an inlet side (open, with a cell on one side only).
+  bool is_inlet_face(int axis, int face) const;
   /// Pressure at a cell centre, Pa.
   double pressure(int cell) const { return pressure_[cell]; }
   /// Pressure of every cell, Pa.
@@ -196,8 +213,6 @@ class GasSolver {
   const std::vector<double>& face_velocity(int axis) const { return velocity_[axis]; }
   /// Number of faces of `axis` along each axis.
   std::array<int, 3> face_counts(int axis) const;
-  /// Porosity of the last step (the old porosity of the next one), dimensionless.
-  const std::vector<double>& porosity() const { return old_porosity_; }
   /// Largest continuity residual of a cell, (d(eps V)/dt + net outflow), over the largest volume
   /// flow through a face (of the last step's final velocities), dimensionless.
   double mass_imbalance() const { return mass_imbalance_; }
@@ -208,17 +223,12 @@ class GasSolver {
   /// leaves); 0 on closed and periodic sides. With the gas's weight it is what separates the
   /// pressure drop across the grid from the force of the gas on the particles.
   double momentum_inflow(int side) const;
-  /// The grid.
-  const GasGrid& grid() const { return grid_; }
 
-  /// Everything the next step depends on besides its inputs, as plain doubles: the face velocities
-  /// (x, y, z), the pressures, the old porosities, a flag for "has an old porosity" and the
-  /// inlet faces' drops (what the pressure gradient next to an inlet is read from).
-  /// restore_state(save_state()) reproduces the following steps bit for bit.
-  std::vector<double> save_state() const;
-  /// Restores a save_state() of a solver on the same grid; throws std::invalid_argument if the
-  /// size does not match.
-  void restore_state(std::span<const double> state);
+  /// The state the next step depends on besides its inputs (a copy).
+  GasSolverState state() const;
+  /// Restores a state() of a solver on the same grid and boundaries; throws
+  /// std::invalid_argument naming the array when a size does not fit this grid.
+  void set_state(GasSolverState state);
 
  private:
   /// The inputs of one step.
@@ -236,8 +246,6 @@ class GasSolver {
   void assemble_pressure_correction();
   double continuity_imbalance(const StepInputs& in);
   double face_porosity(int axis, int face, std::span<const double> porosity) const;
-  /// Whether a face lies on an inlet side (open, with a cell on one side only).
-  bool is_inlet_face(int axis, int face) const;
   /// Sets inlet_drop_ from the step's inputs and final velocities.
   void set_inlet_drops(const StepInputs& in);
   /// Gradient of p across a face as the momentum equation sees it, Pa/m; false if the face has

@@ -1,8 +1,9 @@
-// The gas solver's inputs between steps, fields at cells and state for checkpoints
+// The gas solver's inputs between steps, fields at cells and its state for checkpoints
 // (fluid/gas_solver.hpp).
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "gas_solver.hpp"
 #include "gas_workspace.hpp"
@@ -106,47 +107,35 @@ double GasSolver::momentum_inflow(int side) const {
   return (high ? -1.0 : 1.0) * gas_.density * sum;
 }
 
-std::vector<double> GasSolver::save_state() const {
-  std::vector<double> state;
-  for (int a = 0; a < 3; ++a) state.insert(state.end(), velocity_[a].begin(), velocity_[a].end());
-  state.insert(state.end(), pressure_.begin(), pressure_.end());
-  if (has_old_porosity_)
-    state.insert(state.end(), old_porosity_.begin(), old_porosity_.end());
-  else
-    state.insert(state.end(), pressure_.size(), 1.0);
-  state.push_back(has_old_porosity_ ? 1.0 : 0.0);
-  for (int a = 0; a < 3; ++a)
-    for (int f = 0; f < layout_->face_count[a]; ++f)
-      if (is_inlet_face(a, f)) state.push_back(inlet_drop_[a][f]);
+GasSolverState GasSolver::state() const {
+  GasSolverState state;
+  state.face_velocity = velocity_;
+  state.pressure = pressure_;
+  if (has_old_porosity_) state.previous_porosity = old_porosity_;
+  state.inlet_drop = inlet_drop_;
   return state;
 }
 
-void GasSolver::restore_state(std::span<const double> state) {
-  const std::size_t cells = pressure_.size();
-  std::size_t inlet_faces = 0;
-  for (int a = 0; a < 3; ++a)
-    for (int f = 0; f < layout_->face_count[a]; ++f) inlet_faces += is_inlet_face(a, f);
-  const std::size_t expected =
-      velocity_[0].size() + velocity_[1].size() + velocity_[2].size() + 2 * cells + 1 + inlet_faces;
-  require(state.size() == expected, "a saved gas state of " + std::to_string(state.size()) +
-                                        " values does not fit this grid (" +
-                                        std::to_string(expected) + " expected)");
-  auto next = state.begin();
+void GasSolver::set_state(GasSolverState state) {
+  auto check = [](const std::vector<double>& values, std::size_t expected,
+                  const std::string& what) {
+    require(values.size() == expected, "a saved gas state has " + std::to_string(values.size()) +
+                                           " " + what + "; this grid has " +
+                                           std::to_string(expected));
+  };
+  static const char* const kAxis[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    std::copy(next, next + velocity_[a].size(), velocity_[a].begin());
-    next += velocity_[a].size();
+    check(state.face_velocity[a], velocity_[a].size(), std::string(kAxis[a]) + "-face velocities");
+    check(state.inlet_drop[a], inlet_drop_[a].size(), std::string(kAxis[a]) + "-face inlet drops");
   }
-  std::copy(next, next + cells, pressure_.begin());
-  next += cells;
-  has_old_porosity_ = next[cells] != 0.0;
-  if (has_old_porosity_)
-    old_porosity_.assign(next, next + cells);
-  else
-    old_porosity_.clear();
-  next += cells + 1;
-  for (int a = 0; a < 3; ++a)
-    for (int f = 0; f < layout_->face_count[a]; ++f)
-      inlet_drop_[a][f] = is_inlet_face(a, f) ? *next++ : 0.0;
+  check(state.pressure, pressure_.size(), "cell pressures");
+  if (!state.previous_porosity.empty())
+    check(state.previous_porosity, pressure_.size(), "cell porosities");
+  velocity_ = std::move(state.face_velocity);
+  pressure_ = std::move(state.pressure);
+  has_old_porosity_ = !state.previous_porosity.empty();
+  old_porosity_ = std::move(state.previous_porosity);
+  inlet_drop_ = std::move(state.inlet_drop);
 }
 
 }  // namespace carom

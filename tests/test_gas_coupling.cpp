@@ -305,7 +305,7 @@ TEST(FluidizedBed, MinimumFluidizationVelocityFromARamp) {
   in.gas_density = rho_g;
   in.gas_viscosity = 1.8e-5;
   in.particle_density = 2500.0;
-  const DragClosure closure("gidaspow_blend", 0.4, g);
+  const DragClosure closure(DragClosureKind::GidaspowBlend, 0.4, g);
   const CellLayout layout = CellLayout::over(system.domain, run.gas->cells());
   // The closure's U_mf for the bed as it is now, and its mean porosity where it is packed.
   auto closure_minimum_fluidization = [&](double& mean_porosity) {

@@ -190,7 +190,7 @@ TEST(Scene, ReadsGasAndFlight) {
   Scene scene = parse_scene(text, "good.toml");
   EXPECT_EQ(scene.gas.coupling, CouplingLevel::TwoWay);
   EXPECT_EQ(scene.gas.cells, (std::array<int, 3>{2, 3, 4}));
-  EXPECT_EQ(scene.gas.closure, "beetstra");
+  EXPECT_EQ(scene.gas.closure, DragClosureKind::Beetstra);
   EXPECT_EQ(scene.gas.sides[4].kind, GasSide::Kind::Inlet);
   EXPECT_DOUBLE_EQ(scene.gas.sides[4].velocity, 0.3);
   EXPECT_DOUBLE_EQ(scene.gas.sides[4].ramp_time, 1.0);

@@ -53,7 +53,7 @@ static void describe_gas(const Scene& scene, std::ostringstream& out) {
       << "\n";
   out << "  gas: rho_g = " << short_number(gas.density) << " kg/m^3, mu_g = " << short_number(gas.viscosity)
       << " Pa s on " << gas.cells[0] << " x " << gas.cells[1] << " x " << gas.cells[2] << " cells, fluid step "
-      << short_number(gas.time_step) << " s, drag closure " << gas.closure << "\n";
+      << short_number(gas.time_step) << " s, drag closure " << drag_closure_name(gas.closure) << "\n";
   for (int s = 0; s < 6; ++s) {
     const GasSide& side = gas.sides[s];
     if (side.kind == GasSide::Kind::Inlet)
@@ -72,7 +72,7 @@ static void describe_gas(const Scene& scene, std::ostringstream& out) {
     out << "  " << sp.name << ": Stokes relaxation time " << short_number(stokes_tau) << " s";
     if (g > 0) {
       out << ", terminal velocity " << short_number(closure.terminal_velocity(in)) << " m/s, U_mf "
-          << short_number(closure.minimum_fluidization_velocity(in, 0.4)) << " m/s (" << gas.closure
+          << short_number(closure.minimum_fluidization_velocity(in, 0.4)) << " m/s (" << drag_closure_name(gas.closure)
           << " at eps_mf = 0.4; Wen-Yu correlation " << short_number(wen_yu_minimum_fluidization_velocity(in, g))
           << " m/s)";
     }

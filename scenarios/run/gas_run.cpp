@@ -16,20 +16,17 @@ std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene
     gas->prepare(sim.system().particles);  // porosity at t = 0 for the first outputs
   GasCoupling* coupling = gas.get();
   const bool kick = scene.flight.model == FlightModel::Kick;
-  const double particle_step = scene.flight.particle_step;
+  const KickScheme kicks(scene.flight.particle_step, system.flight.gravity);
   // The fluid step comes first in the calendar, so at a common time the kick uses the new drag.
   sim.add_synchronising_action("fluid_step", sim.time(), scene.gas.time_step,
-                               [coupling, kick, particle_step](GlobalStep& step) {
+                               [coupling, kick, kicks](GlobalStep& step) {
                                  coupling->step(step.time, step.particles, step.flights);
-                                 if (kick)
-                                   coupling->check_kick_stability(particle_step, step.particles,
-                                                                  step.flights);
+                                 if (kick) kicks.check_stability(step.particles, step.flights);
                                });
   if (kick)
-    sim.add_synchronising_action("drag_kick", sim.time(), particle_step,
-                                 [coupling, particle_step](GlobalStep& step) {
-                                   coupling->kick(particle_step, step.particles, step.flights);
-                                 });
+    sim.add_synchronising_action(
+        "drag_kick", sim.time(), kicks.particle_step(),
+        [kicks](GlobalStep& step) { kicks.kick(step.particles, step.flights); });
   return gas;
 }
 

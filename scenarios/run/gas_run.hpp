@@ -6,6 +6,7 @@
 
 #include "events/method.hpp"
 #include "fluid/coupling.hpp"
+#include "fluid/kick_scheme.hpp"
 #include "scenarios/scene/scene.hpp"
 
 namespace carom {

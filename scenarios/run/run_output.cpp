@@ -179,7 +179,7 @@ RunFile::RunFile(const std::string& path, const RunInfo& info, const System& sys
     group.write<double>("lower", {d.gas_lower.x(), d.gas_lower.y(), d.gas_lower.z()});
     group.write<double>("spacing", {d.gas_spacing.x(), d.gas_spacing.y(), d.gas_spacing.z()});
     group.write("open_volume", gas->open_volume(), gas_shape(d.gas_cells, 0));
-    group.write_string("closure", gas->settings().closure);
+    group.write_string("closure", std::string(drag_closure_name(gas->settings().closure)));
     group.set_attribute("density", gas->settings().density);
     group.set_attribute("viscosity", gas->settings().viscosity);
     group.set_attribute("time_step", gas->settings().time_step);

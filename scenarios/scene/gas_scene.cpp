@@ -109,7 +109,8 @@ void read_flight_and_gas(TableReader& root, Scene& scene) {
       gas.cells[k] = static_cast<int>(cells[k]);
     }
     gas.time_step = g->number("time_step", gas.time_step, Range::positive("fluid time step dt, s"));
-    gas.closure = g->string("drag", gas.closure, closure_names());
+    gas.closure = parse_drag_closure(
+        g->string("drag", std::string(drag_closure_name(gas.closure)), closure_names()));
     gas.fluidization_porosity = g->number("fluidization_porosity", gas.fluidization_porosity,
                                           Range{0.0, 1.0, true, true,
                                                 "porosity at minimum fluidization eps_mf "

@@ -287,7 +287,7 @@ TEST(DragClosures, NamesRoundTripAndBadNamesRejected) {
         EXPECT_NE(message.find(name), std::string::npos) << message;
     }
   }
-  EXPECT_THROW(DragClosure("ergun", 1.0), std::invalid_argument);
+  EXPECT_THROW(DragClosure(DragClosureKind::Ergun, 1.0), std::invalid_argument);  // eps_mf = 1
 }
 
 // Cost of one K per particle (the coupling calls it twice per particle per fluid step).

@@ -105,14 +105,6 @@ class GasCoupling {
   /// shape expected when one is missing or does not fit this grid or species count.
   void restore(const h5::Group& group);
 
-  /// Transitional: the same checkpoint as one positional vector (the format that
-  /// scenarios/run/checkpoint.cpp stores in /gas/state), until checkpoint.cpp calls
-  /// save(group); remove then.
-  std::vector<double> save() const;
-  /// Transitional: restores a save() vector; throws std::invalid_argument if its size does not
-  /// fit this grid and species count.
-  void restore(const std::vector<double>& state);
-
  private:
   void map_particles(const ParticleStore& particles);
   /// Side s's jet profile at time t (the ramp applied), m/s.

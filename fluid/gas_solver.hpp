@@ -201,8 +201,6 @@ class GasSolver {
   /// no equation at the face, whose velocity is given): eps (p_face - p_c) = +-h/2 [beta (u_face
   /// - v_s) - eps rho_g g] along the face's axis (+ on a low side). 0 on other faces.
   double inlet_drop(int axis, int face) const { return inlet_drop_[axis][face]; }
-  /// Whether a face lies on an inlet side (open, with a cell on one side only).
-  bool is_inlet_face(int axis, int face) const;
   /// Pressure at a cell centre, Pa.
   double pressure(int cell) const { return pressure_[cell]; }
   /// Pressure of every cell, Pa.
@@ -246,6 +244,8 @@ class GasSolver {
   void assemble_pressure_correction();
   double continuity_imbalance(const StepInputs& in);
   double face_porosity(int axis, int face, std::span<const double> porosity) const;
+  /// Whether a face lies on an inlet side (open, with a cell on one side only).
+  bool is_inlet_face(int axis, int face) const;
   /// Sets inlet_drop_ from the step's inputs and final velocities.
   void set_inlet_drops(const StepInputs& in);
   /// Gradient of p across a face as the momentum equation sees it, Pa/m; false if the face has

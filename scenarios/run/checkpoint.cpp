@@ -23,7 +23,7 @@ void write_checkpoint(const std::string& path, const CollisionMethod& sim, const
     created = true;
     write_info(file, info, kCheckpointKind);
     sim.save_state(file.create_group("state"));
-    if (gas != nullptr) file.create_group("gas").write("state", gas->save());
+    if (gas != nullptr) gas->save(file.create_group("gas"));
     file.close();
     replace_file(temporary, path);
   } catch (...) {
@@ -37,7 +37,11 @@ Checkpoint read_checkpoint(const std::string& path) {
   checkpoint.file = std::make_shared<h5::File>(h5::File::open(path, false));
   checkpoint.info = read_info(*checkpoint.file, kCheckpointKind);
   if (!checkpoint.file->contains("state")) checkpoint.file->fail("holds no /state: not a complete checkpoint");
-  if (checkpoint.file->contains("gas")) checkpoint.gas_state = checkpoint.file->open_group("gas").read<double>("state");
+  if (checkpoint.has_gas() && checkpoint.gas_state().contains("state"))
+    checkpoint.file->fail(
+        "holds the gas state as one positional array, as carom wrote it before the gas checkpoint "
+        "had named datasets; this version cannot resume it: run the scene again (or resume it with "
+        "the carom that wrote it)");
   return checkpoint;
 }
 

@@ -3,7 +3,7 @@
 namespace carom {
 
 std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene,
-                                        const std::vector<double>* saved_state) {
+                                        const h5::Group* saved_state) {
   if (scene.gas.coupling == CouplingLevel::None) return nullptr;
   const System& system = sim.system();
   std::vector<double> density;

@@ -16,6 +16,6 @@ namespace carom {
 /// flights). Returns nullptr when the scene has no coupled gas. `saved_state`: the gas state of
 /// a checkpoint, restored so that a resumed run continues bit for bit.
 std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene,
-                                        const std::vector<double>* saved_state = nullptr);
+                                        const h5::Group* saved_state = nullptr);
 
 }  // namespace carom

@@ -256,7 +256,15 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   } catch (const std::exception& e) {
     throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
   }
-  std::unique_ptr<GasCoupling> gas = attach_gas(*sim, scene, &checkpoint.gas_state);
+  std::optional<h5::Group> saved_gas;
+  if (checkpoint.has_gas()) saved_gas = checkpoint.gas_state();
+  std::unique_ptr<GasCoupling> gas;
+  try {
+    gas = attach_gas(*sim, scene, saved_gas ? &*saved_gas : nullptr);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
+  }
+  saved_gas.reset();
   checkpoint.file.reset();  // everything is read: the run writes its next checkpoint over it
   RunAnalysis analysis(scene, *sim, (dir / "run.h5").string(), now);
   std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());

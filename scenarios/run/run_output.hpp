@@ -30,7 +30,8 @@
 /// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
 /// scene_name; /scene; /state: the method's state, attribute method = its kind (for the
 /// event-driven engine see events/event_driven/engine_state.hpp); /gas: the gas's state when
-/// the scene has one. Doubles are stored as native doubles: bit for bit.
+/// the scene has one (named datasets, fluid/coupling_state.cpp). Doubles are stored as native
+/// doubles: bit for bit.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -86,9 +87,11 @@ void write_checkpoint(const std::string& path, const CollisionMethod& sim, const
 struct Checkpoint {
   RunInfo info;
   std::shared_ptr<const h5::File> file;  ///< The checkpoint, open read-only.
-  std::vector<double> gas_state;  ///< GasCoupling::save(); empty without a gas.
   /// The method's saved state (CollisionMethod::save_state), for restore_method.
   h5::Group method_state() const { return file->open_group("state"); }
+  /// Whether the run had a gas, and its saved state (GasCoupling::save), for attach_gas.
+  bool has_gas() const { return file->contains("gas"); }
+  h5::Group gas_state() const { return file->open_group("gas"); }
 };
 Checkpoint read_checkpoint(const std::string& path);
 

@@ -1,6 +1,5 @@
 // The gas coupling's checkpoint (fluid/coupling_state.cpp): a coupling restored from save() into
-// a fresh one continues bit for bit, through the named HDF5 layout and through the transitional
-// positional vector; a checkpoint that does not fit the scene is refused with the dataset and
+// a fresh one continues bit for bit through the named HDF5 layout; a checkpoint that does not fit the scene is refused with the dataset and
 // the shape it should have. Determinism is exact, so every comparison is of bits.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -176,29 +175,6 @@ TEST_F(CouplingCheckpoint, LayoutNamesEveryArray) {
   EXPECT_EQ(group.open_dataset("face_velocity_z").shape(), (std::vector<hsize_t>{7, 2, 3}));
   EXPECT_EQ(group.open_dataset("species_gas_force").shape(), (std::vector<hsize_t>{2, 3}));
   EXPECT_EQ(group.read<std::uint64_t>("fluid_steps"), std::vector<std::uint64_t>{1});
-}
-
-// The transitional positional vector (what scenarios/run/checkpoint.cpp stores today) restores
-// just as exactly, and refuses a vector of the wrong size.
-TEST_F(CouplingCheckpoint, RestoredFromPositionalVectorContinuesBitForBit) {
-  Bed bed;
-  auto original = bed.coupling();
-  original->prepare(bed.particles);
-  advance(*original, bed.particles, bed.flights, 0, 4);
-  ParticleStore particles_at_save = bed.particles;
-  std::vector<RelaxFlight> flights_at_save = bed.flights;
-  const std::vector<double> saved = original->save();
-  auto restored = Bed().coupling();
-  restored->restore(saved);
-  advance(*original, bed.particles, bed.flights, 4, 4);
-  advance(*restored, particles_at_save, flights_at_save, 4, 4);
-  // The positional vector carries no step counters: compare all else.
-  EXPECT_EQ(restored->save(), original->save());
-  for (std::size_t i = 0; i < bed.flights.size(); ++i)
-    ASSERT_EQ(bits(bed.flights[i].rate), bits(flights_at_save[i].rate));
-  std::vector<double> short_state = saved;
-  short_state.pop_back();
-  EXPECT_THROW(Bed().coupling()->restore(short_state), std::invalid_argument);
 }
 
 // A checkpoint of another grid or another number of species is refused before anything

@@ -1,7 +1,7 @@
 #pragma once
 /// Conservative advancement to the earliest contact of a gap function G(s) (zero at contact,
 /// positive before) along a relax flight, shared by the relax contact searches (pairs and the
-/// cylinder in relax_roots.cpp, and curved walls elsewhere). The method and its
+/// cylinder in relax_roots.cpp, the cone in walls/cone_relax.cpp). The method and its
 /// guarantee are described at the top of relax_roots.cpp: with a lower bound G'' >= -K valid
 /// from the current time to the horizon, a step to the first root of the lower bound
 /// G + G' h - K h^2 / 2 can never pass a contact.

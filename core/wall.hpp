@@ -1,7 +1,8 @@
 #pragma once
 /// Fixed boundaries: a closed set of shapes (core/walls/), each shape-dependent operation a visit
 /// over them, so that a new shape is one file and the compiler names every operation it lacks.
-/// Shapes: infinite planes of any orientation, the inside of a vertical cylinder.
+/// Shapes: infinite planes of any orientation, the inside of a vertical cylinder, the inside of
+/// a vertical cone.
 #include <string>
 #include <variant>
 #include <vector>
@@ -9,13 +10,14 @@
 #include "domain.hpp"
 #include "relax_flight.hpp"
 #include "vec3.hpp"
+#include "walls/cone.hpp"
 #include "walls/cylinder.hpp"
 #include "walls/plane.hpp"
 
 namespace carom {
 
 /// The geometry of a wall: one of the shapes of core/walls/.
-using WallShape = std::variant<PlaneWall, CylinderWall>;
+using WallShape = std::variant<PlaneWall, CylinderWall, ConeWall>;
 
 /// A wall is a sphere of infinite mass and radius for the collision law.
 struct Wall {
@@ -31,6 +33,14 @@ struct Wall {
   static Wall cylinder(std::string label, double axis_x, double axis_y, double inner_radius) {
     return Wall{std::move(label), CylinderWall{Vec3(axis_x, axis_y, 0.0), inner_radius}};
   }
+  /// The inside of a cone with axis parallel to z through (axis_x, axis_y), radius
+  /// radius_bottom at z_bottom and radius_top at z_top (m; see walls/cone.hpp).
+  static Wall cone(std::string label, double axis_x, double axis_y, double z_bottom,
+                   double radius_bottom, double z_top, double radius_top) {
+    return Wall{std::move(label),
+                ConeWall(axis_x, axis_y, z_bottom, radius_bottom, z_top, radius_top)};
+  }
+
   /// Gap between a sphere (centre r, radius a) and the wall surface: > 0 when apart, m.
   double gap(const Vec3& r, double a) const {
     return std::visit([&](const auto& s) { return s.gap(r, a); }, shape);
@@ -64,7 +74,8 @@ inline double relax_wall_contact(const Wall& wall, const Vec3& r, const Vec3& v,
 }
 
 /// Throws std::invalid_argument (naming the wall) when a wall cannot be simulated under this
-/// gravity (m/s^2) in this domain: a cylinder needs gravity along its axis (z).
+/// gravity (m/s^2) in this domain: a cylinder or a cone needs gravity along its axis (z), a
+/// cone a walled z axis and its apex outside the domain.
 inline void validate_walls(const std::vector<Wall>& walls, const Vec3& gravity,
                            const Domain& domain) {
   for (const Wall& wall : walls)

@@ -54,11 +54,13 @@ void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
 std::vector<CellShare> split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
                                     const Vec3& centre, double radius);
 
-/// Volume of each cell inside all the walls (planes: the side their normal points to; cylinder:
-/// the inside), m^3; how each shape cuts a cell is in wall_cell_cut.hpp. Exact for cells cut by
-/// any planes (axis-aligned ones clip the cell, others by convex clipping) or by one cylinder plus
-/// axis-aligned planes; a cell cut both by a cylinder and by an oblique plane, or by two
-/// cylinders, gets the product of the inside fractions.
+/// Volume of each cell inside all the walls (planes: the side their normal points to; cylinder
+/// and cone: the inside), m^3; how each shape cuts a cell is in wall_cell_cut.hpp. Exact for
+/// cells cut by any planes (axis-aligned ones clip the cell, others by convex clipping) or by one
+/// cylinder plus axis-aligned planes; to about 1e-13 of the cell volume for one cone plus
+/// axis-aligned planes (quadrature over z of the exact cross-section); a cell cut both by a
+/// curved wall and by an oblique plane, or by two curved walls, gets the product of the inside
+/// fractions.
 std::vector<double> open_volume(const CellLayout& layout, const std::vector<Wall>& walls);
 
 /// Solid volume and porosity of every cell.

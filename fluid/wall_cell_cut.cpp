@@ -1,6 +1,7 @@
 #include "wall_cell_cut.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -47,6 +48,83 @@ double inside_fraction(const CylinderWall& wall, const CellCut& cell) {
   return disk_rectangle_area(wall.point.x(), wall.point.y(), wall.radius, lo.x(), hi.x(), lo.y(),
                              hi.y()) /
          rectangle;
+}
+
+namespace {
+
+/// 8-point Gauss-Legendre rule on [0, 1]: nodes and weights.
+constexpr std::array<double, 8> kNodes = {
+    0.019855071751231856, 0.10166676129318664, 0.23723379504183550, 0.40828267875217510,
+    0.59171732124782490,  0.76276620495816450, 0.89833323870681336, 0.98014492824876814};
+constexpr std::array<double, 8> kWeights = {
+    0.050614268145188130, 0.11119051722668724, 0.15685332293894364, 0.18134189168918099,
+    0.18134189168918099,  0.15685332293894364, 0.11119051722668724, 0.050614268145188130};
+
+/// The integral of f over [a, b] by the 8-point rule.
+template <class F>
+double gauss8(const F& f, double a, double b) {
+  double sum = 0.0;
+  for (int i = 0; i < 8; ++i) sum += kWeights[i] * f(a + (b - a) * kNodes[i]);
+  return sum * (b - a);
+}
+
+/// Adaptive: the 8-point rule on [a, b] against its two halves, halving until they agree to
+/// `tolerance` (absolute) or the depth runs out.
+template <class F>
+double adaptive(const F& f, double a, double b, double whole, double tolerance, int depth) {
+  const double mid = 0.5 * (a + b);
+  const double left = gauss8(f, a, mid), right = gauss8(f, mid, b);
+  if (depth <= 0 || std::abs(left + right - whole) <= tolerance) return left + right;
+  return adaptive(f, a, mid, left, 0.5 * tolerance, depth - 1) +
+         adaptive(f, mid, b, right, 0.5 * tolerance, depth - 1);
+}
+
+}  // namespace
+
+double inside_fraction(const ConeWall& wall, const CellCut& cell) {
+  const Vec3& lo = cell.lower;
+  const Vec3& hi = cell.upper;
+  const double cx = wall.axis_x(), cy = wall.axis_y();
+  const double rectangle = (hi.x() - lo.x()) * (hi.y() - lo.y());
+  auto area_at = [&](double z) {
+    return disk_rectangle_area(cx, cy, std::max(wall.radius_at(z), 0.0), lo.x(), hi.x(), lo.y(),
+                               hi.y());
+  };
+  if (wall.slope() == 0.0) return area_at(lo.z()) / rectangle;
+  // Heights where the area's form changes: the radius reaches an edge line or a corner of the
+  // cross-section, or zero (the apex).
+  const double a0 = lo.x() - cx, a1 = hi.x() - cx, b0 = lo.y() - cy, b1 = hi.y() - cy;
+  const std::array<double, 9> radii = {0.0,
+                                       std::abs(a0),
+                                       std::abs(a1),
+                                       std::abs(b0),
+                                       std::abs(b1),
+                                       std::hypot(a0, b0),
+                                       std::hypot(a0, b1),
+                                       std::hypot(a1, b0),
+                                       std::hypot(a1, b1)};
+  std::array<double, 11> cuts{};
+  int n = 0;
+  cuts[n++] = lo.z();
+  for (double radius : radii) {
+    const double z = wall.z_bottom() + (radius - wall.radius_bottom()) / wall.slope();
+    if (z > lo.z() && z < hi.z()) cuts[n++] = z;
+  }
+  cuts[n++] = hi.z();
+  std::sort(cuts.begin(), cuts.begin() + n);
+  const double height = hi.z() - lo.z();
+  double volume = 0.0;
+  for (int k = 0; k + 1 < n; ++k) {
+    const double z0 = cuts[k], dz = cuts[k + 1] - cuts[k];
+    if (!(dz > 0.0)) continue;
+    // z = z0 + dz (3 t^2 - 2 t^3): the (R - R_c)^{3/2} kinks at both ends become smooth in t.
+    auto integrand = [&](double t) {
+      return area_at(z0 + dz * t * t * (3.0 - 2.0 * t)) * 6.0 * t * (1.0 - t) * dz;
+    };
+    volume +=
+        adaptive(integrand, 0.0, 1.0, gauss8(integrand, 0.0, 1.0), 1e-13 * rectangle * dz, 20);
+  }
+  return std::clamp(volume / (rectangle * height), 0.0, 1.0);
 }
 
 }  // namespace carom

@@ -6,8 +6,8 @@
 ///   1. clip_cell: axis-aligned planes clip the cell's box;
 ///   2. cut_cell: oblique planes that cut the clipped box are collected as half-spaces (the box
 ///      is then clipped by all of them at once), or mark the cell as wholly outside;
-///   3. inside_fraction: the fraction of the clipped box inside a curved wall (a cylinder),
-///      which multiplies the volume; 1 for planes.
+///   3. inside_fraction: the fraction of the clipped box inside a curved wall (a cylinder, a
+///      cone), which multiplies the volume; 1 for planes.
 /// The passes run in this order whatever the order of the walls.
 #include <vector>
 
@@ -32,11 +32,15 @@ int plane_axis(const PlaneWall& wall);
 void clip_cell(const PlaneWall& wall, CellCut& cell);
 /// Pass 1: a cylinder does not clip the box.
 inline void clip_cell(const CylinderWall& /*wall*/, CellCut& /*cell*/) {}
+/// Pass 1: a cone does not clip the box.
+inline void clip_cell(const ConeWall& /*wall*/, CellCut& /*cell*/) {}
 
 /// Pass 2: an oblique plane wholly past the box marks it outside; one through it is collected.
 void cut_cell(const PlaneWall& wall, CellCut& cell);
 /// Pass 2: a cylinder is no half-space.
 inline void cut_cell(const CylinderWall& /*wall*/, CellCut& /*cell*/) {}
+/// Pass 2: a cone is no half-space.
+inline void cut_cell(const ConeWall& /*wall*/, CellCut& /*cell*/) {}
 
 /// Pass 3: a plane has been applied by passes 1 and 2: fraction 1.
 inline double inside_fraction(const PlaneWall& /*wall*/, const CellCut& /*cell*/) {
@@ -45,5 +49,11 @@ inline double inside_fraction(const PlaneWall& /*wall*/, const CellCut& /*cell*/
 /// Pass 3: the fraction of the box's cross-section inside the cylinder (exact, disk-rectangle
 /// area).
 double inside_fraction(const CylinderWall& wall, const CellCut& cell);
+/// Pass 3: the fraction of the box's volume inside the cone: the integral over z of the exact
+/// disk-rectangle area at radius max(R(z), 0), by adaptive Gauss-Legendre quadrature on the
+/// pieces between the heights where the disk's edge meets a corner or an edge line of the box
+/// (there the area has a (R - R_c)^{3/2} kink, removed by a substitution); to about 1e-13 of
+/// the box volume.
+double inside_fraction(const ConeWall& wall, const CellCut& cell);
 
 }  // namespace carom

@@ -1,5 +1,5 @@
 #pragma once
-/// The brute-force oracle of contact searches (tests/test_relax_roots.cpp and others):
+/// The brute-force oracle of contact searches (tests/test_relax_roots.cpp, test_cone_contact.cpp):
 /// a scan of the gap function G(s) on a fine grid. A contact is the first grid cell where G goes
 /// from > 0 to <= 0, refined by bisection; a dip shorter than a cell is caught where G' goes
 /// from < 0 to > 0 inside a cell (its minimum, found by bisection on G', is checked).

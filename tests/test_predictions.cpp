@@ -1,7 +1,7 @@
 // EventDrivenEngine predictions (events/event_driven/*_predictions.cpp) against brute-force integration of the trajectories.
 //
-// Small systems (2-4 particles, box walls, an inclined plane, a Wall::cylinder, gravity,
-// periodic boxes, sizes 1:5) are built; the simulator processes its cell crossings until
+// Small systems (2-4 particles, box walls, an inclined plane, a Wall::cylinder, two Wall::cones,
+// gravity, periodic boxes, sizes 1:5) are built; the simulator processes its cell crossings until
 // its earliest predicted event is a collision (EventDrivenEngine::predicted_events()). The oracle
 // integrates every trajectory exactly from the initial state and finds, for every pair and
 // particle-wall couple, the first time its gap falls below -tol by conservative advancement: it
@@ -88,6 +88,12 @@ struct Oracle {
       return std::abs(v.dot(plane.normal)) + std::abs(g.dot(plane.normal)) * horizon;
     }
     double operator()(const CylinderWall&) const { return std::hypot(v.x(), v.y()); }
+    // gap = (R(z) - rho) cos(alpha) - a: |gap'| <= (|slope| |v_z(s)| + |v_h|) cos(alpha).
+    double operator()(const ConeWall& cone) const {
+      return (std::abs(cone.slope()) * (std::abs(v.z()) + std::abs(g.z()) * horizon) +
+              std::hypot(v.x(), v.y())) /
+             cone.secant();
+    }
   };
   double wall_rate_bound(std::size_t i, std::size_t w) const {
     return std::visit(WallRateBound{v0[i], sim.system().flight.gravity, horizon},
@@ -285,6 +291,21 @@ TEST(Predictions, CylinderWithGravity) {
   Scenario sc{"cylinder", box(Vec3(-3, -3, 0), Vec3(3, 3, 6)), {Wall::cylinder("pipe", 0.2, -0.1, 2.6)},
               Vec3(0, 0, -9.81), {1.0, 0.5}, 3, 2.0};
   run_family(sc, 300, 3000);
+}
+
+// A hopper (the cone widens upwards; apex at z = -4.2, below the box) and a converging duct
+// (narrowing upwards; apex at z = 9.2, above it), both with gravity along the axis: the
+// quartic contact condition, its roots on the other nappe rejected.
+TEST(Predictions, ConeHopperWithGravity) {
+  Scenario sc{"cone hopper", box(Vec3(-3, -3, 0), Vec3(3, 3, 6)),
+              {Wall::cone("hopper", 0.2, -0.1, 0.0, 1.2, 6.0, 2.9)}, Vec3(0, 0, -9.81), {1.0, 0.5}, 3, 2.0};
+  run_family(sc, 300, 6000);
+}
+
+TEST(Predictions, ConeNarrowingUpwardsWithGravity) {
+  Scenario sc{"cone duct", box(Vec3(-3, -3, 0), Vec3(3, 3, 6)),
+              {Wall::cone("duct", -0.1, 0.3, 0.0, 2.9, 6.0, 1.0)}, Vec3(0, 0, -9.81), {1.0, 0.5}, 3, 2.0};
+  run_family(sc, 300, 7000);
 }
 
 TEST(Predictions, PeriodicBox) {

@@ -1,8 +1,93 @@
 #include "scenarios/scene/walls_scene.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 
 namespace carom {
+
+namespace {
+
+/// The radii x (m) of one end of a cone that keep its apex outside the domain's heights, the
+/// other end's radius `other` and both heights given. `bottom`: x is radius_bottom. With
+/// R(Z) (z_top - z_bottom) = radius_bottom (z_top - Z) + radius_top (Z - z_bottom), R > 0 at
+/// both ends Z of the domain is linear in x there: c x + d > 0.
+Range apex_free_radii(bool bottom, double other, double z_bottom, double z_top, const Domain& d,
+                      const std::string& meaning) {
+  Range range{0.0, std::numeric_limits<double>::infinity(), false, true, meaning};
+  for (double Z : {d.lower.z(), d.upper.z()}) {
+    const double c = bottom ? z_top - Z : Z - z_bottom;
+    const double constant = other * (bottom ? Z - z_bottom : z_top - Z);
+    if (c > 0.0 && -constant / c >= range.lower) {
+      range.lower = -constant / c;
+      range.lower_open = true;
+    }
+    if (c < 0.0 && -constant / c < range.upper) {
+      range.upper = -constant / c;
+      range.upper_open = true;
+    }
+  }
+  return range;
+}
+
+/// A derived number for a message, to 6 digits (no round-off tail as 0.0037499999999999994).
+std::string rounded(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+/// A derived range for a message, its bounds to 6 digits.
+std::string rounded(const Range& range) {
+  return std::string(range.lower_open ? "(" : "[") + rounded(range.lower) + ", " +
+         (std::isinf(range.upper) ? std::string("inf") : rounded(range.upper)) +
+         (range.upper_open ? ")" : "]");
+}
+
+void read_cone(TableReader& w, const std::string& name, Scene& scene) {
+  const Domain& d = scene.system.domain;
+  const Vec3& g = scene.system.flight.gravity;
+  if (d.periodic[2])
+    w.fail("type",
+           "needs a walled z axis: a cone's radius changes along z (remove \"z\" from "
+           "domain.periodic)");
+  if (g.x() != 0.0 || g.y() != 0.0)
+    w.fail("type",
+           "has its axis along z, so domain.gravity must be along z too (it has x or y parts)");
+  const Vec3 axis = w.required_vector3(
+      "axis", Range::any("a point on the cone's axis (along z); z is ignored, m"));
+  const double z_bottom =
+      w.number("z_bottom", Range::any("height of the circle of radius radius_bottom, m"));
+  const double z_top =
+      w.number("z_top", Range{z_bottom, std::numeric_limits<double>::infinity(), true, true,
+                              "height of the circle of radius radius_top, m, above z_bottom"});
+  const double radius_bottom =
+      w.number("radius_bottom", Range::non_negative("inner radius at z_bottom, m"));
+  const double radius_top = w.number("radius_top", Range::non_negative("inner radius at z_top, m"));
+  if (!(std::max(radius_bottom, radius_top) > 0.0))
+    w.fail("radius_top", "leaves no cone with radius_bottom = 0 too: one of them must be > 0");
+  const ConeWall cone(axis.x(), axis.y(), z_bottom, radius_bottom, z_top, radius_top);
+  if (!(cone.radius_at(d.lower.z()) > 0.0 && cone.radius_at(d.upper.z()) > 0.0)) {
+    // The narrower end points at the apex: name it, with the radii that would keep the apex out.
+    const bool bottom = radius_bottom < radius_top;
+    const std::string key = bottom ? "radius_bottom" : "radius_top";
+    const Range allowed =
+        apex_free_radii(bottom, bottom ? radius_top : radius_bottom, z_bottom, z_top, d,
+                        std::string("inner radius at ") + (bottom ? "z_bottom" : "z_top") +
+                            ", m, that keeps the cone's apex outside the domain's heights [" +
+                            format_number(d.lower.z()) + ", " + format_number(d.upper.z()) +
+                            "] m with the other keys as given");
+    w.fail(key, "is outside the allowed range " + rounded(allowed) + " (" + allowed.meaning +
+                    ": the conical surface continues past z_bottom and z_top with the same slope, "
+                    "and these radii "
+                    "put its apex at z = " +
+                    rounded(cone.apex_z()) + " m)");
+  }
+  scene.system.walls.push_back(Wall{name, cone});
+}
+
+}  // namespace
 
 void read_walls(TableReader& root, Scene& scene) {
   scene.system.walls = box_walls(scene.system.domain);
@@ -11,18 +96,20 @@ void read_walls(TableReader& root, Scene& scene) {
     for (const Wall& other : scene.system.walls)
       if (other.name == name)
         w.fail("name", "is already the name of a wall (box walls are x_low, x_high, y_low, ...)");
-    const std::string type = w.required_string("type", {"plane", "cylinder"});
+    const std::string type = w.required_string("type", {"plane", "cylinder", "cone"});
     if (type == "plane") {
       const Vec3 point = w.required_vector3("point", Range::any("a point on the plane, m"));
       const Vec3 normal =
           w.required_vector3("normal", Range::any("normal pointing into the particles' side"));
       if (!(normal.norm() > 0.0)) w.fail("normal", "must not be the zero vector");
       scene.system.walls.push_back(Wall::plane(name, point, normal));
-    } else {
+    } else if (type == "cylinder") {
       const Vec3 axis = w.required_vector3(
           "axis", Range::any("a point on the cylinder's axis (along z); z is ignored, m"));
       const double radius = w.number("radius", Range::positive("inner radius of the cylinder, m"));
       scene.system.walls.push_back(Wall::cylinder(name, axis.x(), axis.y(), radius));
+    } else {
+      read_cone(w, name, scene);
     }
     w.finish();
   }

@@ -6,7 +6,7 @@
 namespace carom {
 
 /// Sets scene.system.walls to the box walls of the domain plus every [[walls]] entry (planes,
-/// cylinders).
+/// cylinders, cones), each checked against the domain and gravity read before.
 void read_walls(TableReader& root, Scene& scene);
 
 }  // namespace carom

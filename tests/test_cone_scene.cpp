@@ -125,9 +125,9 @@ TEST(ConeScene, HopperRunKeepsParticlesInsideAndClosesTheEnergy) {
   test::expect_finishes(60, [] {
     Scene scene = parse_scene(kHopper, "hopper.toml");
     build_initial_state(scene);
-    SimulatorOptions options = scene.options;
+    EventDrivenOptions options = scene.method.event_driven;
     options.check_invariants = true;
-    Simulator sim(scene.system, options);
+    EventDrivenEngine sim(scene.system, options);
     const double total0 = sim.energies().total();
     const std::size_t cone = sim.system().walls.size() - 1;
     double worst_energy = 0.0, worst_gap = 0.0;

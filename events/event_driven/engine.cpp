@@ -219,11 +219,7 @@ double EventDrivenEngine::next_synchronisation() const {
 }
 
 void EventDrivenEngine::predict_any(std::int32_t i) {
-  switch (flight_kind_) {
-    case Flights::Straight: return predict<StraightFlights>(i);
-    case Flights::Gravity: return predict<GravityFlights>(i);
-    case Flights::Relax: return predict<RelaxFlights>(i);
-  }
+  with_flight([&](auto flight) { predict<decltype(flight)>(i); });
 }
 
 template <class Flight>
@@ -263,12 +259,7 @@ bool EventDrivenEngine::run_until(double t_end) {
   if (flight_kind_ == Flights::Relax && horizon_ == kNever && !agenda_.empty())
     throw std::logic_error("relax flights need a synchronising action (the fluid step)");
   // The flight is chosen here, once: everything below is compiled for it.
-  switch (flight_kind_) {
-    case Flights::Straight: return run_events<StraightFlights>(t_end);
-    case Flights::Gravity: return run_events<GravityFlights>(t_end);
-    case Flights::Relax: return run_events<RelaxFlights>(t_end);
-  }
-  return false;
+  return with_flight([&](auto flight) { return run_events<decltype(flight)>(t_end); });
 }
 
 template <class Flight>
@@ -313,24 +304,16 @@ bool EventDrivenEngine::run_events(double t_end) {
 
 Vec3 EventDrivenEngine::position(std::size_t i) const {
   const HotState& m = hot_[i];
-  const double dt = time_ - m.clock;
-  switch (flight_kind_) {
-    case Flights::Straight: return StraightFlights::position_after(m, dt, system_.flight, flights_[i]);
-    case Flights::Gravity: return GravityFlights::position_after(m, dt, system_.flight, flights_[i]);
-    case Flights::Relax: break;
-  }
-  return RelaxFlights::position_after(m, dt, system_.flight, flights_[i]);
+  return with_flight([&](auto flight) {
+    return decltype(flight)::position_after(m, time_ - m.clock, system_.flight, flights_[i]);
+  });
 }
 
 Vec3 EventDrivenEngine::velocity(std::size_t i) const {
   const HotState& m = hot_[i];
-  const double dt = time_ - m.clock;
-  switch (flight_kind_) {
-    case Flights::Straight: return StraightFlights::velocity_after(m, dt, system_.flight, flights_[i]);
-    case Flights::Gravity: return GravityFlights::velocity_after(m, dt, system_.flight, flights_[i]);
-    case Flights::Relax: break;
-  }
-  return RelaxFlights::velocity_after(m, dt, system_.flight, flights_[i]);
+  return with_flight([&](auto flight) {
+    return decltype(flight)::velocity_after(m, time_ - m.clock, system_.flight, flights_[i]);
+  });
 }
 
 Energies EventDrivenEngine::energies() const {

@@ -119,6 +119,17 @@ class EventDrivenEngine final : public CollisionMethod {
  private:
   /// Which of the flights of flights.hpp this run's particles fly (chosen at construction).
   enum class Flights { Straight, Gravity, Relax };
+  /// Calls visit(Flight{}) with this run's flight type: the one place that turns flight_kind_
+  /// into a type.
+  template <class Visit>
+  decltype(auto) with_flight(Visit&& visit) const {
+    switch (flight_kind_) {
+      case Flights::Straight: return visit(StraightFlights{});
+      case Flights::Gravity: return visit(GravityFlights{});
+      case Flights::Relax: break;
+    }
+    return visit(RelaxFlights{});
+  }
 
   // --- The loop, templated over the flight (engine.cpp, collisions.cpp) -----------------------
   template <class Flight>

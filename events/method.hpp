@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,14 +19,40 @@
 
 namespace carom {
 
-/// Kinetic, potential and dissipated energy at the current time, J.
+/// Kinetic, potential, elastic and dissipated energy at the current time, J.
 struct Energies {
   double translational = 0;  ///< sum m v^2 / 2.
   double rotational = 0;     ///< sum I w^2 / 2.
   double potential = 0;      ///< sum -m g . r (positions folded into the box).
-  double dissipated = 0;     ///< Lost in collisions since the start.
-  /// translational + rotational + potential + dissipated: constant in an exact run.
-  double total() const { return translational + rotational + potential + dissipated; }
+  double elastic = 0;        ///< Stored in the springs of the contacts now (soft spheres; else 0).
+  double dissipated = 0;     ///< Lost in collisions since the start (damping and friction).
+  /// Work done on the particles by the gas forces (drag, pressure gradient) since the start;
+  /// 0 where a method does not book it.
+  double gas_work = 0;
+  /// translational + rotational + potential + elastic + dissipated - gas_work: constant in an
+  /// exact run.
+  double total() const {
+    return translational + rotational + potential + elastic + dissipated - gas_work;
+  }
+};
+
+/// A number a method measures beyond RunStatistics (a soft-sphere run's coordination number,
+/// mean contact duration, time step), for summary.json and report.md.
+struct MethodQuantity {
+  std::string name;  ///< snake_case key, e.g. "coordination_number".
+  double value = 0;  ///< In `unit`.
+  std::string unit;  ///< SI unit, "" for a pure number.
+  std::string what;  ///< One line saying what it is.
+};
+
+/// A method that cannot go on (an unstable step, overlaps beyond bounds): the run stops with
+/// `status` in summary.json and the message, which names the cause and the remedy. The method
+/// is left at a consistent state (the last good step).
+class MethodFailure : public std::runtime_error {
+ public:
+  MethodFailure(std::string status, const std::string& message)
+      : std::runtime_error(message), status(std::move(status)) {}
+  std::string status;  ///< snake_case, e.g. "soft_sphere_unstable".
 };
 
 /// What a synchronising action (the fluid step, a drag kick) sees and may change: every
@@ -86,6 +113,8 @@ class CollisionMethod {
   /// counts a collision when a contact begins), impulses, virial, dissipated energy, events
   /// (time-stepped: steps).
   virtual const RunStatistics& statistics() const = 0;
+  /// What the method measures beyond statistics() (none for the event-driven method).
+  virtual std::vector<MethodQuantity> quantities() const { return {}; }
 
   /// Writes everything needed to continue exactly (bit for bit) into `group` (a checkpoint):
   /// the dynamic state, counters and clocks; the scene supplies the rest again. The group's

@@ -162,6 +162,10 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
     finish("kick_unstable", e.what());
     std::cerr << "carom: " << e.what() << "\n";
     return kExitFailure;
+  } catch (const MethodFailure& e) {
+    finish(e.status, e.what());
+    std::cerr << "carom: " << e.what() << "\n";
+    return kExitFailure;
   }
   if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
   if (last_sample < sim.time()) file.append_sample(sim, gas, analysis.sample(sim, gas));

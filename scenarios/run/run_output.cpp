@@ -54,7 +54,9 @@ SeriesLayout series_layout(std::size_t species, std::size_t walls) {
                     {"kinetic_translational", 0},
                     {"kinetic_rotational", 0},
                     {"potential", 0},
+                    {"elastic", 0},
                     {"dissipated", 0},
+                    {"gas_work", 0},
                     {"total_energy", 0},
                     {"event_rate", 0},
                     {"collision_rate", 0},
@@ -345,14 +347,17 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
   };
 
   const h5::Group series = d.file.open_group("timeseries");
+  // A run file written before a column existed (resumed with a newer carom) goes on without it.
   auto put = [&](const char* name, const auto& values) {
-    series.open_dataset(name).append(values);
+    if (series.contains(name)) series.open_dataset(name).append(values);
   };
   put("time", std::vector<double>{time});
   put("kinetic_translational", std::vector<double>{energy.translational});
   put("kinetic_rotational", std::vector<double>{energy.rotational});
   put("potential", std::vector<double>{energy.potential});
+  put("elastic", std::vector<double>{energy.elastic});
   put("dissipated", std::vector<double>{energy.dissipated});
+  put("gas_work", std::vector<double>{energy.gas_work});
   put("total_energy", std::vector<double>{energy.total()});
   put("event_rate", std::vector<double>{rate(stats.events, d.previous_events)});
   put("collision_rate", std::vector<double>{rate(stats.collisions(), d.previous_collisions)});

@@ -138,7 +138,12 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
     << ", \"total\": " << json_number(p_kin + p_coll) << "},\n";
   const Energies e = sim.energies();
   j << "  \"energy\": {\"translational\": " << json_number(e.translational) << ", \"rotational\": " << json_number(e.rotational)
-    << ", \"potential\": " << json_number(e.potential) << ", \"dissipated\": " << json_number(e.dissipated) << "},\n";
+    << ", \"potential\": " << json_number(e.potential) << ", \"elastic\": " << json_number(e.elastic)
+    << ", \"dissipated\": " << json_number(e.dissipated) << ", \"gas_work\": " << json_number(e.gas_work) << "},\n";
+  const std::vector<MethodQuantity> quantities = sim.quantities();
+  j << "  \"method\": {\"kind\": " << json_string(std::string(sim.kind()));
+  for (const MethodQuantity& q : quantities) j << ", " << json_string(q.name) << ": " << json_number(q.value);
+  j << "},\n";
   j << "  \"simulated_seconds_per_wall_second\": "
     << json_number(stretch.wall_seconds > 0 ? dt / stretch.wall_seconds : NAN);
   if (stretch.gas != nullptr) {

@@ -1,6 +1,7 @@
 #include "events/method_factory.hpp"
 
 #include "events/event_driven/engine.hpp"
+#include "events/soft_sphere/engine.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,8 @@ std::unique_ptr<CollisionMethod> make_method(System system, const MethodSettings
   switch (settings.kind) {
     case MethodKind::EventDriven:
       return std::make_unique<EventDrivenEngine>(std::move(system), settings.event_driven);
+    case MethodKind::SoftSphere:
+      return std::make_unique<SoftSphereEngine>(std::move(system), settings.soft_sphere);
   }
   throw std::logic_error("make_method: unknown method kind");
 }
@@ -27,6 +30,8 @@ std::unique_ptr<CollisionMethod> restore_method(System system, const MethodSetti
     case MethodKind::EventDriven:
       return std::make_unique<EventDrivenEngine>(std::move(system), settings.event_driven,
                                                  read_engine_state(saved));
+    case MethodKind::SoftSphere:
+      return std::make_unique<SoftSphereEngine>(std::move(system), settings.soft_sphere, saved);
   }
   throw std::logic_error("restore_method: unknown method kind");
 }

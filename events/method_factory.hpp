@@ -8,6 +8,7 @@
 #include "core/hdf5.hpp"
 #include "core/system.hpp"
 #include "events/event_driven/options.hpp"
+#include "events/soft_sphere/options.hpp"
 #include "events/method.hpp"
 
 namespace carom {
@@ -15,15 +16,17 @@ namespace carom {
 /// The collision methods (DESIGN.md section 8).
 enum class MethodKind {
   EventDriven,  ///< Exact flights and binary hard-sphere collisions (events/event_driven/).
+  SoftSphere,   ///< Soft-sphere DEM: contact forces at a fixed step (events/soft_sphere/).
 };
 
 /// The scene names of the methods, in MethodKind order.
-inline constexpr std::array<std::string_view, 1> kMethodNames{"event_driven"};
+inline constexpr std::array<std::string_view, 2> kMethodNames{"event_driven", "soft_sphere"};
 
 /// What a scene says about its method: which one, and each method's own settings.
 struct MethodSettings {
   MethodKind kind = MethodKind::EventDriven;
   EventDrivenOptions event_driven;  ///< Flights, collapse remedies, grid (event_driven).
+  SoftSphereOptions soft_sphere;    ///< Contact model, elastic constants, step (soft_sphere).
 };
 
 /// The scene name of a method.

@@ -124,7 +124,12 @@ void build_initial_state(Scene& scene) {
   }
   // Placed and listed particles must not touch at all; a state read from a run may overlap by
   // round-off, which the engine itself tolerates (kContactTolerance).
-  const double tolerance = from_file.empty() ? 0.0 : kContactTolerance;
+  // Soft spheres overlap at their contacts: a state of a soft-sphere run may overlap by as much
+  // as the method itself allows (half of max_overlap of the contact distance bounds
+  // max_overlap of the smaller radius).
+  const bool soft = scene.method.kind == MethodKind::SoftSphere;
+  const double run_tolerance = soft ? 0.5 * scene.method.soft_sphere.max_overlap : kContactTolerance;
+  const double tolerance = from_file.empty() ? 0.0 : run_tolerance;
   try {
     validate_initial_state(system, tolerance);
   } catch (const std::invalid_argument& e) {
@@ -133,7 +138,7 @@ void build_initial_state(Scene& scene) {
   if (scene.settle_time <= 0.0) return;
   settle(scene);
   try {
-    validate_initial_state(system, kContactTolerance);
+    validate_initial_state(system, run_tolerance);
   } catch (const std::invalid_argument& e) {  // an engine invariant broken: report it plainly
     throw SceneError(scene.settle_where + ": initial.settle_time: the settled state is not valid: " + e.what());
   }

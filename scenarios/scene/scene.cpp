@@ -14,6 +14,7 @@
 #include "scenarios/scene/domain_scene.hpp"
 #include "scenarios/scene/initial_scene.hpp"
 #include "scenarios/scene/particles_scene.hpp"
+#include "scenarios/scene/soft_sphere_scene.hpp"
 #include "scenarios/scene/species_scene.hpp"
 #include "scenarios/scene/time_scene.hpp"
 #include "scenarios/scene/walls_scene.hpp"
@@ -48,7 +49,7 @@ namespace {
 
 const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
                                             "collisions", "flight", "initial", "time",    "output", "engine", "gas",
-                                            "analysis", "method"};
+                                            "analysis", "method", "soft_sphere"};
 
 void read_meta(TableReader& root, Scene& scene, const std::string& fallback_name) {
   scene.name = fallback_name;
@@ -103,6 +104,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   read_engine(root, scene);
   read_analysis(root, scene);
   read_method(root, scene);
+  read_soft_sphere(root, scene);
   root.finish();
   return scene;
 }

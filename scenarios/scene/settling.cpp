@@ -24,6 +24,8 @@ void settle(Scene& scene) {
                                  [](GlobalStep&) {});
   try {
     sim.run_until(scene.settle_time);
+  } catch (const MethodFailure& e) {
+    throw SceneError(context + ": the settling run failed: " + e.what());
   } catch (const InelasticCollapse& e) {
     const CollapseOptions& c = scene.method.event_driven.collapse;
     throw SceneError(

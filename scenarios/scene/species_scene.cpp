@@ -19,6 +19,12 @@ void read_species(TableReader& root, Scene& scene, std::vector<TableReader>& spe
     species.diameter = s.number("diameter", Range::positive("sphere diameter, m"));
     species.density = s.number("density", Range::positive("solid density, kg/m^3"));
     species.fixed = s.boolean("fixed", false);
+    // Elastic constants: used by the soft-sphere method's Hertz–Mindlin contacts, ignored by
+    // the hard-sphere methods (so one scene runs with either).
+    ElasticMaterial elastic;
+    elastic.young_modulus = s.number("young_modulus", 0.0, Range::non_negative("Young's modulus E, Pa (soft spheres; 0: not given)"));
+    elastic.poisson_ratio = s.number("poisson_ratio", 0.3, Range{0.0, 0.5, false, true, "Poisson ratio (soft spheres)"});
+    scene.method.soft_sphere.species_materials.push_back(elastic);
     scene.system.species.push_back(species);
   }
 }

@@ -91,7 +91,20 @@ void read_cone(TableReader& w, const std::string& name, Scene& scene) {
 
 void read_walls(TableReader& root, Scene& scene) {
   scene.system.walls = box_walls(scene.system.domain);
+  auto& materials = scene.method.soft_sphere.wall_materials;
+  materials.assign(scene.system.walls.size(), std::nullopt);
   for (TableReader w : root.tables("walls")) {
+    // Elastic constants for soft-sphere contacts (default: soft_sphere.wall_young_modulus, or
+    // the material of the particle that touches it).
+    if (w.has("young_modulus")) {
+      ElasticMaterial elastic;
+      elastic.young_modulus = w.number("young_modulus", Range::positive("Young's modulus of the wall, Pa (soft spheres)"));
+      elastic.poisson_ratio = w.number("poisson_ratio", 0.3, Range{0.0, 0.5, false, true, "Poisson ratio of the wall (soft spheres)"});
+      materials.push_back(elastic);
+    } else {
+      if (w.has("poisson_ratio")) w.fail("poisson_ratio", "needs young_modulus beside it");
+      materials.push_back(std::nullopt);
+    }
     const std::string name = w.required_string("name");
     for (const Wall& other : scene.system.walls)
       if (other.name == name)

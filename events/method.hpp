@@ -97,6 +97,11 @@ class CollisionMethod {
 
   /// The current time, s.
   virtual double time() const = 0;
+  /// The earliest time >= t at which run_until can stop without changing the run: t itself for
+  /// the event-driven method (its run_until end touches no particle); the next step boundary for
+  /// a time-stepped method, whose last step would otherwise be cut short. The run loop ends its
+  /// wall-clock chunks there, so that a run does not depend on how fast the machine is.
+  virtual double stop_time(double t) const { return t; }
   /// Box, walls, species, laws, and the particles' constant properties (radius, mass, species,
   /// id). Their dynamic state is read through position(i), velocity(i), spin(i).
   virtual const System& system() const = 0;

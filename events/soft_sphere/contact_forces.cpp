@@ -2,13 +2,14 @@
 // tangential spring with the Coulomb limit, rolling resistance; the counters and the energy
 // books. The formulas are in contact_model.hpp.
 //
-// Energy books: the dissipated energy gets the dashpots' work (gamma rate^2 dt, at the
-// half-step velocities), the Coulomb slip (the friction force times the slip the truncated
-// spring gives up) and the rolling torque's work; the elastic energy is the springs' energy
-// now (normal, and k_t |xi|^2 / 2). The Mindlin spring's stiffness follows the overlap, so its
-// energy changes at a fixed xi without any force doing work: that change is booked with the
-// dissipated energy too (the known non-conservation of the simplified no-slip model), so that
-// kinetic + potential + elastic + dissipated closes to the integration error, O(dt^2).
+// Energy books: the elastic energy is the springs' energy now (normal, and k_t |xi|^2 / 2).
+// The dissipated energy gets the work of the normal dashpot, of the rolling torque, and of the
+// tangential force less what the tangential spring stored (so: the tangential dashpot and the
+// Coulomb slip), each with the end-of-step velocities (book_dissipation). The Mindlin spring's
+// stiffness follows the overlap, so its energy changes at a fixed xi without any force doing
+// work: that change is booked with the dissipated energy too (the known non-conservation of
+// the simplified no-slip model). What remains open is the normal spring's integration error:
+// kinetic + potential + elastic + dissipated closes to O(dt^2) (SoftEnergy test).
 #include <algorithm>
 #include <cmath>
 
@@ -23,8 +24,14 @@ struct ContactForce {
   Vec3 force = Vec3::Zero();     ///< On body 1 (body 2 gets -force), N.
   Vec3 torque1 = Vec3::Zero();   ///< On body 1, N m.
   Vec3 torque2 = Vec3::Zero();   ///< On body 2, N m.
-  double dissipated = 0;         ///< J in this step.
+  double dissipated = 0;         ///< J in this step booked now (the stiffness change).
   double elastic = 0;            ///< J stored now.
+  /// The forces whose work is dissipation or goes into the tangential spring: the normal
+  /// dashpot plus the whole tangential force (on body 1), and the rolling torque; their work
+  /// is booked with the velocities at the end of the step (book_dissipation).
+  Vec3 lossy_force = Vec3::Zero();
+  Vec3 rolling_torque = Vec3::Zero();
+  double spring_energy_change = 0;  ///< k_t |xi|^2 / 2 now minus before the stretch, J.
 };
 
 /// n: unit normal from body 2 to body 1; delta > 0 the overlap; g the contact velocity of body 1
@@ -37,7 +44,6 @@ ContactForce contact_force(const PairContact& c, const Vec3& n, double delta, co
   const Vec3 g_t = g + approach * n;
   const double f_n = c.normal_force(delta, approach);
   const double gamma_n = c.normal_damping_at(delta);
-  out.dissipated += gamma_n * approach * approach * dt;
 
   // Tangential spring: turned into the present tangent plane (length kept), then stretched.
   const double k_t_before = c.tangential_stiffness_at(overlap_before);
@@ -48,6 +54,7 @@ ContactForce contact_force(const PairContact& c, const Vec3& n, double delta, co
     const double turned = spring.norm();
     spring *= turned > 0.0 ? length / turned : 0.0;
   }
+  // The stiffness follows the overlap: the energy that changes at a fixed xi.
   out.dissipated += 0.5 * (k_t_before - k_t) * length * length;
   spring += dt * g_t;
   const double gamma_t = c.tangential_damping_at(delta);
@@ -55,17 +62,15 @@ ContactForce contact_force(const PairContact& c, const Vec3& n, double delta, co
   const double limit = c.friction * std::max(f_n, 0.0);
   const double magnitude = f_t.norm();
   if (magnitude > limit) {
-    // Sliding: the force is the Coulomb limit along the trial force, the spring alone carries
-    // it (Cundall & Strack), and the stretch it gives up is the slip.
+    // Sliding: the force is the Coulomb limit along the trial force, and the spring alone
+    // carries it (Cundall & Strack); the stretch it gives up is the slip.
     f_t *= magnitude > 0.0 ? limit / magnitude : 0.0;
-    const Vec3 held = k_t > 0.0 ? Vec3(-f_t / k_t) : Vec3::Zero();
-    out.dissipated += limit * (spring - held).norm();
-    spring = held;
-  } else {
-    out.dissipated += gamma_t * g_t.squaredNorm() * dt;
+    spring = k_t > 0.0 ? Vec3(-f_t / k_t) : Vec3::Zero();
   }
+  out.spring_energy_change = 0.5 * k_t * spring.squaredNorm() - 0.5 * k_t * length * length;
   overlap_before = delta;
   out.force = f_n * n + f_t;
+  out.lossy_force = gamma_n * approach * n + f_t;
   out.torque1 = -a1 * n.cross(f_t);
   out.torque2 = -a2 * n.cross(f_t);
   out.elastic = c.normal_energy(delta) + 0.5 * k_t * spring.squaredNorm();
@@ -80,7 +85,7 @@ ContactForce contact_force(const PairContact& c, const Vec3& n, double delta, co
       const Vec3 m = -torque / rolling * w_rel;
       out.torque1 += m;
       out.torque2 -= m;
-      out.dissipated += torque * rolling * dt;
+      out.rolling_torque = m;
     }
   }
   return out;
@@ -94,6 +99,7 @@ void SoftSphereEngine::compute_forces(double dt) {
   std::fill(torque_.begin(), torque_.end(), Vec3::Zero());
   const std::size_t S = system_.species.size(), W = system_.walls.size();
   double elastic = 0.0, dissipated = 0.0;
+  lossy_.clear();
   for (PairContactState& c : list_.pairs()) {
     const std::int32_t i = c.owner, j = c.partner;
     Vec3 d = p.position[i] - p.position[j];
@@ -140,7 +146,8 @@ void SoftSphereEngine::compute_forces(double dt) {
     torque_[i] += f.torque1;
     torque_[j] += f.torque2;
     elastic += f.elastic;
-    dissipated += f.dissipated;
+    dissipated += f.dissipated - f.spring_energy_change;
+    if (dt > 0.0) lossy_.push_back({i, j, n, f.lossy_force, f.rolling_torque});
     const double impulse = f.force.norm() * dt;
     statistics_.pair_impulse[si * S + sj] += impulse;
     if (si != sj) statistics_.pair_impulse[sj * S + si] += impulse;
@@ -175,11 +182,32 @@ void SoftSphereEngine::compute_forces(double dt) {
     force_[i] += f.force;
     torque_[i] += f.torque1;
     elastic += f.elastic;
-    dissipated += f.dissipated;
+    dissipated += f.dissipated - f.spring_energy_change;
+    if (dt > 0.0) lossy_.push_back({i, -1, n, f.lossy_force, f.rolling_torque});
     statistics_.wall_impulse[c.wall] -= dt * f.force;
   }
   elastic_ = elastic;
   statistics_.dissipated_energy += dissipated;
+}
+
+void SoftSphereEngine::book_dissipation(double dt) {
+  // With velocity Verlet the force of step k changes the kinetic energy by F . v(t_k) dt exactly
+  // (v(t_k) the mean of the half-step velocities on either side): the lossy forces' work is
+  // booked with the velocities at the end of the step, not the half-step ones they were
+  // computed with (which would be an O(dt / t_c) error in the books).
+  const ParticleStore& p = system_.particles;
+  double work = 0.0;
+  for (const LossyContact& c : lossy_) {
+    const double a_i = p.radius[c.first];
+    Vec3 g = p.velocity[c.first] - a_i * p.spin[c.first].cross(c.normal);
+    Vec3 w_rel = p.spin[c.first];
+    if (c.second >= 0) {
+      g -= p.velocity[c.second] + p.radius[c.second] * p.spin[c.second].cross(c.normal);
+      w_rel -= p.spin[c.second];
+    }
+    work += c.force.dot(g) + c.rolling_torque.dot(w_rel);
+  }
+  statistics_.dissipated_energy -= work * dt;
 }
 
 }  // namespace carom

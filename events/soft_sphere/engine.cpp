@@ -44,10 +44,10 @@ void SoftSphereEngine::setup() {
   list_ = NeighbourList(system_.domain, options_.skin * smallest);
 
   // Which species (and species-wall pairs) occur: only they bound the step.
-  std::vector<bool> present(S, false);
+  std::vector<std::size_t> present(S, 0);  // particles per species
   double fastest = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    present[p.species[i]] = true;
+    ++present[p.species[i]];
     fastest = std::max(fastest, p.velocity[i].norm());
   }
   const Vec3 g = system_.flight.gravity;
@@ -98,7 +98,7 @@ void SoftSphereEngine::setup() {
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(what + ": " + e.what());
       }
-      if (present[s] && present[t]) consider(pair_contacts_[s * S + t], what);
+      if (present[s] > (s == t ? 1u : 0u) && present[t] > 0) consider(pair_contacts_[s * S + t], what);
     }
   for (std::size_t s = 0; s < S; ++s)
     for (std::size_t w = 0; w < W; ++w) {
@@ -115,7 +115,7 @@ void SoftSphereEngine::setup() {
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(what + ": " + e.what());
       }
-      if (present[s]) consider(wall_contacts_[s * W + w], what);
+      if (present[s] > 0) consider(wall_contacts_[s * W + w], what);
     }
   if (!std::isfinite(shortest_contact_time_)) shortest_contact_time_ = 0.0;
   time_step_ = options_.time_step > 0.0 ? options_.time_step
@@ -202,6 +202,15 @@ void SoftSphereEngine::fire_due_actions(double t) {
   }
 }
 
+double SoftSphereEngine::stop_time(double t) const {
+  // The steps run_until would take (the same additions), up to the first action on the way.
+  double next = time_;
+  double action = std::numeric_limits<double>::infinity();
+  for (const SteppedAction& a : actions_) action = std::min(action, a.next_time);
+  while (next < t && next < action) next += time_step_;
+  return std::min(next, std::max(action, time_));
+}
+
 bool SoftSphereEngine::run_until(double t_end) {
   for (;;) {
     fire_due_actions(time_);
@@ -209,13 +218,17 @@ bool SoftSphereEngine::run_until(double t_end) {
     if (stop_flag_ != nullptr && *stop_flag_) return false;
     double target = t_end;
     for (const SteppedAction& a : actions_) target = std::min(target, a.next_time);
+    // A whole step unless the target comes first; a target one step away (up to round-off in
+    // its sum) is reached with a whole step, so that stopping at a step boundary (stop_time)
+    // changes no bit of the run.
     const double remaining = target - time_;
-    if (remaining <= time_step_ * (1.0 + 1e-6)) {
+    if (remaining < time_step_ * (1.0 - 1e-9)) {
       step(remaining);
       time_ = target;
     } else {
       step(time_step_);
       time_ += time_step_;
+      if (std::abs(target - time_) <= 1e-9 * time_step_) time_ = target;
     }
     if (++steps_ % 64 == 0) check_energy();
   }
@@ -257,6 +270,7 @@ void SoftSphereEngine::step(double dt) {
   if (list_.needs_rebuild(p.position)) list_.build(p.position, p.radius, system_.walls);
   compute_forces(dt);
   half_kick(dt);
+  book_dissipation(dt);
   ++statistics_.events;
 }
 

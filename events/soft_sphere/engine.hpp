@@ -60,6 +60,8 @@ class SoftSphereEngine final : public CollisionMethod {
   void add_synchronising_action(std::string name, double first_time, double interval,
                                 std::function<void(GlobalStep&)> step) override;
   double time() const override { return time_; }
+  /// The next step boundary at or after t: stopping there changes nothing.
+  double stop_time(double t) const override;
   const System& system() const override { return system_; }
   Vec3 position(std::size_t i) const override { return system_.particles.position[i]; }
   Vec3 velocity(std::size_t i) const override { return system_.particles.velocity[i]; }
@@ -97,6 +99,8 @@ class SoftSphereEngine final : public CollisionMethod {
   /// Contact forces and torques at the current positions and velocities; the tangential springs
   /// advance by dt (0: evaluate only). Books counters and dissipation; throws MethodFailure.
   void compute_forces(double dt);
+  /// Books the work of the lossy contact forces of this step with the end-of-step velocities.
+  void book_dissipation(double dt);
   void fire_due_actions(double t);
   void check_energy();       // the energy-growth detector; throws MethodFailure
   void hold_fixed_particles();
@@ -109,6 +113,14 @@ class SoftSphereEngine final : public CollisionMethod {
   NeighbourList list_;
   std::vector<double> inverse_mass_, inverse_inertia_;  // 0 for fixed particles
   std::vector<Vec3> force_, torque_;                    // contact force and torque, N, N m
+  /// A touching contact's forces whose work is booked at the end of the step.
+  struct LossyContact {
+    std::int32_t first, second;  // particles; second < 0: a wall
+    Vec3 normal;                 // from the second body to the first
+    Vec3 force;                  // normal dashpot + tangential force on the first, N
+    Vec3 rolling_torque;         // on the first, N m
+  };
+  std::vector<LossyContact> lossy_;
   std::vector<RelaxFlight> flights_;
   std::vector<SteppedAction> actions_;
   std::vector<std::pair<std::string, double>> restored_action_times_;

@@ -118,9 +118,10 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
   sim.set_stop_flag(&g_stop);
   try {
     while (sim.time() < end_time) {
-      const double target = std::min({end_time, sim.time() + chunk, snapshots.next(), samples.next(),
+      const double chunk_end = sim.stop_time(sim.time() + chunk);
+      const double target = std::min({end_time, chunk_end, snapshots.next(), samples.next(),
                                       checkpoints.next(), averages.next()});
-      const bool chunk_limited = target == sim.time() + chunk;
+      const bool chunk_limited = target == chunk_end;
       const auto chunk_start = std::chrono::steady_clock::now();
       sim.run_until(target);
       const double t = sim.time();

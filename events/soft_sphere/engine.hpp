@@ -94,6 +94,7 @@ class SoftSphereEngine final : public CollisionMethod {
 
  private:
   void setup();              // contacts, step, masses; throws std::invalid_argument
+  void sort_particles();     // spatial order in memory (fresh runs)
   void step(double dt);      // one velocity-Verlet step
   void half_kick(double dt); // v += dt/2 (F/m + a(v)), w += dt/2 T/I, books the gas work
   /// Contact forces and torques at the current positions and velocities; the tangential springs
@@ -131,6 +132,7 @@ class SoftSphereEngine final : public CollisionMethod {
   std::uint64_t steps_ = 0;
   double elastic_ = 0;      // stored in the springs at the last force evaluation, J
   double gas_work_ = 0;     // J
+  bool gas_forces_ = false; // a synchronising action has set flights (else gravity alone)
   double energy_start_ = 0;   // energies().total() at the start, J
   double energy_scale_ = 0;   // largest kinetic + elastic energy seen, J
   double worst_overlap_ = 0;  // largest overlap / smaller radius seen

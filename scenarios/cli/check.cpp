@@ -1,4 +1,5 @@
 #include "scenarios/cli/check.hpp"
+#include "scenarios/cli/check_soft_sphere.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -149,16 +150,19 @@ std::string describe_scene(const Scene& scene) {
   out << "\nmodel:\n";
   describe_gas(scene, out);
   out << "  rotation: " << (friction ? "on (some mu > 0: collisions exchange spin)" : "off (every mu = 0: smooth spheres, spins never change)") << "\n";
+  if (scene.method.kind == MethodKind::SoftSphere) describe_soft_sphere(scene, out);
   const CollapseOptions& c = scene.method.event_driven.collapse;
-  if (c.contact_time > 0)
+  if (scene.method.kind != MethodKind::EventDriven) {
+    // the collapse remedies and the neighbour grid below are the event-driven method's
+  } else if (c.contact_time > 0)
     out << "  inelastic collapse: TC model, collisions within " << format_number(c.contact_time) << " s of a particle's previous one are elastic\n";
   else if (dissipative && (system.flight.has_gravity()))
     out << "  inelastic collapse: no remedy, and the scene is dissipative under gravity: a bed at rest WILL collapse; consider [collisions] collapse = { model = \"tc\", contact_time = ... }\n";
   else
     out << "  inelastic collapse: no remedy" << (dissipative ? " (dissipative: clusters may collapse in long runs)" : " (elastic: none needed)") << "\n";
-  if (c.elastic_below_speed > 0) out << "  impacts slower than " << format_number(c.elastic_below_speed) << " m/s are elastic\n";
+  if (scene.method.kind == MethodKind::EventDriven && c.elastic_below_speed > 0) out << "  impacts slower than " << format_number(c.elastic_below_speed) << " m/s are elastic\n";
 
-  if (p.size() > 0) {
+  if (p.size() > 0 && scene.method.kind == MethodKind::EventDriven) {
     HierarchicalGrid grid(d, p.radius, scene.method.event_driven.grid_level_ratio);
     out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "")
         << " (a new level below " << format_number(scene.method.event_driven.grid_level_ratio) << " x the diameter above)\n";

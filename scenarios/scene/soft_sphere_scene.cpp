@@ -9,9 +9,8 @@ void read_soft_sphere(TableReader& root, Scene& scene) {
   auto t = root.table("soft_sphere");
   const bool used = scene.method.kind == MethodKind::SoftSphere;
   if (t) {
-    if (!used)
-      t->fail_table("is for [method] kind = \"soft_sphere\"; this scene runs \"" +
-                    std::string(method_name(scene.method.kind)) + "\" (remove it, or set the method)");
+    // Read and checked with any method, used only by soft spheres: one scene file switches
+    // between methods with [method] kind alone.
     const std::string model = t->string("contact_model", "hertz_mindlin", {"hertz_mindlin", "linear"});
     o.model = model == "linear" ? ContactModel::Linear : ContactModel::HertzMindlin;
     const std::string damping = t->string("damping", "exact", {"exact", "liggghts"});

@@ -160,8 +160,14 @@ std::string describe_scene(const Scene& scene) {
 
   if (p.size() > 0) {
     HierarchicalGrid grid(d, p.radius, scene.method.event_driven.grid_level_ratio);
-    out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "")
-        << " (a new level below " << format_number(scene.method.event_driven.grid_level_ratio) << " x the diameter above)\n";
+    const double ratio = scene.method.event_driven.grid_level_ratio;
+    out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "") << " ("
+        << (ratio < 0.0   ? std::string("sizes split into levels by the grid's cost model, the split with the least "
+                                        "expected prediction work; engine.grid_level_ratio sets a fixed ratio")
+            : ratio == 0.0 ? std::string("one grid for every size: engine.grid_level_ratio = 0")
+                           : "a diameter below " + format_number(ratio) +
+                                 " x the largest of a level starts a new level: engine.grid_level_ratio")
+        << ")\n";
     for (std::size_t l = 0; l < grid.levels().size(); ++l) {
       const auto& level = grid.levels()[l];
       out << "    level " << l << ": " << level.cells[0] << " x " << level.cells[1] << " x " << level.cells[2]

@@ -16,6 +16,7 @@
 #include "scenarios/cli/check.hpp"
 #include "scenarios/cli/info.hpp"
 #include "scenarios/run/run.hpp"
+#include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
 #include "scenarios/sweep/sweep.hpp"
 
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
 
   std::string scene_path, out_dir, resume_dir, info_path;
   std::vector<std::string> overrides;
-  std::uint64_t seed = 0;
+  std::string seed_text;  // checked by parse_seed: CLI11 would wrap "-1" into 2^64 - 1
   bool quiet = false, overwrite = false;
   double end_time = 0;
 
@@ -44,7 +45,7 @@ int main(int argc, char** argv) {
   run->add_option("--set", overrides, "change a scene value before validation, e.g. --set collisions.default.e=0.9")
       ->type_name("KEY=VALUE");
   CLI::Option* out_option = run->add_option("--out", out_dir, "output directory (default: SCENE's name + .out)");
-  CLI::Option* seed_option = run->add_option("--seed", seed, "random seed (replaces initial.seed)");
+  CLI::Option* seed_option = run->add_option("--seed", seed_text, "random seed, an integer >= 0 (replaces initial.seed)");
   run->add_flag("--quiet", quiet, "no progress line and no messages but errors");
   run->add_flag("--overwrite", overwrite, "replace the outputs of an earlier run in DIR");
 
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "validate a scene and print what it will model; writes nothing");
   check->add_option("scene", scene_path, "scene file")->required();
   check->add_option("--set", overrides, "change a scene value before validation")->type_name("KEY=VALUE");
-  CLI::Option* check_seed = check->add_option("--seed", seed, "random seed");
+  CLI::Option* check_seed = check->add_option("--seed", seed_text, "random seed, an integer >= 0");
 
   CLI::App* info = app.add_subcommand("info", "describe a run file or checkpoint");
   info->add_option("file", info_path, "HDF5 file (run.h5 or checkpoint.h5)")->required();
@@ -90,7 +91,7 @@ int main(int argc, char** argv) {
   try {
     if (*run || *check) {
       std::optional<std::uint64_t> chosen_seed;
-      if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = seed;
+      if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = parse_seed(seed_text);
       Scene scene = load_scene(scene_path, overrides, chosen_seed);
       if (*check) {
         build_initial_state(scene);

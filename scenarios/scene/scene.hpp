@@ -114,13 +114,17 @@ std::uint32_t species_index(TableReader& t, std::string_view key, const Scene& s
 std::size_t region_index(TableReader& t, std::string_view key, const Scene& scene);
 
 /// Parses and validates a scene text. `overrides` are "key=value" assignments applied to the
-/// table first; `seed`, when given, replaces initial.seed. Throws SceneError.
+/// table first; `seed`, when given, replaces initial.seed. `override_origins[k]`, when given and
+/// not empty, says where override k was written ("sweep.toml:12"): messages about its value name
+/// that place instead of "(set on the command line)". Throws SceneError (also for a sweep file).
 Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides = {},
-                  std::optional<std::uint64_t> seed = std::nullopt);
-/// Reads the file and parses it (a missing or unreadable file is a SceneError too).
+                  std::optional<std::uint64_t> seed = std::nullopt,
+                  const std::vector<std::string>& override_origins = {});
+/// Reads the file and parses it (a missing or unreadable file, or a directory, is a SceneError too).
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
-                 std::optional<std::uint64_t> seed = std::nullopt);
+                 std::optional<std::uint64_t> seed = std::nullopt,
+                 const std::vector<std::string>& override_origins = {});
 
 /// Places every particle (listed ones first, then those of initial.from_file, then the fills in
 /// species order), gives the filled ones their velocities, validates the result (no overlaps,

@@ -7,10 +7,12 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "scenarios/scene/fill_capacity.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
 
@@ -31,6 +33,29 @@ const std::string kBox =
     "fill = { count = 20 }\n"     // 8
     "[time]\n"                    // 9
     "end = 0.1\n";                // 10
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+/// The SceneError message of building the scene ("" when it is fine).
+std::string build_error(const std::string& text) {
+  try {
+    Scene scene = parse_scene(text, "bad.toml");
+    build_initial_state(scene);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The number after `prefix` in `text` (0 when absent).
+std::size_t number_after(const std::string& text, const std::string& prefix) {
+  const std::size_t at = text.find(prefix);
+  return at == std::string::npos ? 0 : std::stoull(text.substr(at + prefix.size()));
+}
 
 }  // namespace
 
@@ -103,4 +128,45 @@ TEST(InputErrors, OverrideFromASweepFileNamesItsLine) {
   // The stored text (for checkpoints) is the same whichever way the value came.
   EXPECT_EQ(parse_scene(kBox, "s.toml", {"time.end=0.5"}, std::nullopt, {"sweep.toml:7"}).text,
             parse_scene(kBox, "s.toml", {"time.end=0.5"}).text);
+}
+
+// 1e8 beads of 1 mm in a 1 cm box used to be refused only after the placement had allocated
+// gigabytes and tried for tens of seconds. Now at once, with the largest count that fits:
+// 0.64 of 1e-6 m^3 over (pi/6) 1e-9 m^3 = 1222.3.
+TEST(InputErrors, ImpossibleRandomFillIsRefusedAtOnce) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message = build_error(replace(kBox, "count = 20", "count = 100000000"));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_NE(message.find("bad.toml:8: species[0].fill.count = 100000000"), std::string::npos) << message;
+  EXPECT_NE(message.find("at most 1222 fit"), std::string::npos) << message;
+  EXPECT_NE(message.find("random close packing"), std::string::npos) << message;
+  EXPECT_LT(seconds, 1.0) << "refused, but only after " << seconds << " s";
+  // A volume fraction above random close packing, and a mass fraction that implies too many.
+  EXPECT_NE(build_error(replace(kBox, "fill = { count = 20 }", "fill = { volume_fraction = 0.7 }"))
+                .find("species[0].fill.volume_fraction = 0.7"),
+            std::string::npos);
+  // Below the bound the placement is still what decides (and names the lattice as the remedy).
+  EXPECT_NE(build_error(replace(kBox, "count = 20", "count = 1200")).find("placed only"), std::string::npos);
+}
+
+// For a lattice fill the bound is the lattice itself: the count the message gives is placed,
+// one more is refused before placement.
+TEST(InputErrors, LatticeFillCapacityIsExact) {
+  for (const std::string arrangement : {"fcc", "cubic"}) {
+    SCOPED_TRACE(arrangement);
+    const std::string message = build_error(
+        replace(kBox, "count = 20", "count = 100000000, arrangement = \"" + arrangement + "\""));
+    EXPECT_NE(message.find("bad.toml:8: species[0].fill.count = 100000000"), std::string::npos) << message;
+    EXPECT_NE(message.find(arrangement + " lattice at contact spacing"), std::string::npos) << message;
+    const std::size_t capacity = number_after(message, "so at most ");
+    ASSERT_GT(capacity, 100u) << message;
+    const std::string fits = replace(kBox, "count = 20",
+                                     "count = " + std::to_string(capacity) + ", arrangement = \"" + arrangement + "\"");
+    EXPECT_EQ(build_error(fits), "") << "the largest count said to fit does not";
+    Scene scene = parse_scene(fits, "ok.toml");
+    EXPECT_EQ(fill_capacity(scene, 0), capacity);
+    const std::string one_more = build_error(replace(
+        kBox, "count = 20", "count = " + std::to_string(capacity + 1) + ", arrangement = \"" + arrangement + "\""));
+    EXPECT_NE(one_more.find("so at most " + std::to_string(capacity) + " fit"), std::string::npos) << one_more;
+  }
 }

@@ -2,6 +2,7 @@
 // then velocities; then, optionally, a settling run.
 #include <cmath>
 
+#include "scenarios/scene/fill_capacity.hpp"
 #include "scenarios/scene/initial_file.hpp"
 #include "scenarios/scene/placement.hpp"
 #include "scenarios/scene/scene.hpp"
@@ -78,6 +79,7 @@ void build_initial_state(Scene& scene) {
   System& system = scene.system;
   system.particles = ParticleStore{};
   const std::vector<std::size_t> counts = fill_counts(scene);
+  check_fill_capacities(scene, counts);  // before anything is allocated for them
   std::vector<double> radii;
   for (const ListedParticle& p : scene.listed) radii.push_back(system.species[p.species].radius());
   std::vector<FileParticle> from_file;

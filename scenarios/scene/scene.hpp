@@ -37,6 +37,9 @@ struct Fill {
   std::size_t region = 0;         ///< Index into Scene::regions.
   Arrangement arrangement = Arrangement::Random;
   std::string where;              ///< "file:line" of the fill, for messages.
+  std::string amount_key;         ///< Dotted key of the amount ("species[0].fill.count"), for messages.
+  std::string amount_where;       ///< "file:line" of the amount's value.
+  std::string amount_text;        ///< The amount as written ("100000000").
 };
 
 /// A particle written out in the scene.

@@ -18,6 +18,7 @@
 #include "scenarios/run/run.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "scenarios/scene/settling.hpp"
 #include "scenarios/sweep/sweep.hpp"
 
 using namespace carom;
@@ -94,7 +95,9 @@ int main(int argc, char** argv) {
       if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = parse_seed(seed_text);
       Scene scene = load_scene(scene_path, overrides, chosen_seed);
       if (*check) {
-        build_initial_state(scene);
+        install_stop_handlers();
+        build_initial_state(scene, stop_flag());
+        if (*stop_flag()) throw InterruptedBeforeStart("interrupted while the particles were placed: nothing checked");
         try {
           make_method(scene.system, scene.method);  // the checks a run makes at its start
         } catch (const std::invalid_argument& e) {
@@ -119,6 +122,9 @@ int main(int argc, char** argv) {
       print_file_info(info_path, std::cout);
       return kExitOk;
     }
+  } catch (const InterruptedBeforeStart& e) {
+    std::cerr << "carom: " << e.what() << "\n";
+    return kExitInterrupted;
   } catch (const SceneError& e) {
     std::cerr << "carom: error: " << e.what() << "\n";
     return kExitUsage;

@@ -14,6 +14,7 @@
 #include "scenarios/analysis/run_analysis.hpp"
 #include "scenarios/run/run_output.hpp"
 #include "scenarios/run/summary.hpp"
+#include "scenarios/scene/settling.hpp"
 
 namespace carom {
 
@@ -205,9 +206,16 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+const volatile std::sig_atomic_t* stop_flag() { return &g_stop; }
+
 int run_scene(Scene scene, const RunOptions& options) {
-  // Everything that can be wrong with a scene is found before the first file is created.
-  build_initial_state(scene);
+  // Everything that can be wrong with a scene is found before the first file is created. A
+  // signal meanwhile (placing, settling) stops it with nothing written.
+  install_stop_handlers();
+  build_initial_state(scene, stop_flag());
+  if (g_stop)
+    throw InterruptedBeforeStart("interrupted while the particles were placed, before the run's t = 0: nothing "
+                                 "was written; run the same command again to start over");
   std::unique_ptr<CollisionMethod> sim;
   try {
     sim = make_method(scene.system, scene.method);

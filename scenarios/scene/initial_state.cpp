@@ -75,7 +75,7 @@ std::string with_sources(const std::string& message, const Scene& scene, std::si
 }
 }  // namespace
 
-void build_initial_state(Scene& scene) {
+void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
   System& system = scene.system;
   system.particles = ParticleStore{};
   const std::vector<std::size_t> counts = fill_counts(scene);
@@ -133,7 +133,7 @@ void build_initial_state(Scene& scene) {
     throw SceneError(scene.file + ": initial state: " + with_sources(e.what(), scene, first_from_file, from_file.size()));
   }
   if (scene.settle_time <= 0.0) return;
-  settle(scene);
+  settle(scene, stop);
   try {
     validate_initial_state(system, kContactTolerance);
   } catch (const std::invalid_argument& e) {  // an engine invariant broken: report it plainly

@@ -8,6 +8,7 @@
 /// Both throw SceneError with a message naming the file, line, key, value and allowed range.
 /// SCENES.md documents every key.
 #include <array>
+#include <csignal>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -132,8 +133,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 /// Places every particle (listed ones first, then those of initial.from_file, then the fills in
 /// species order), gives the filled ones their velocities, validates the result (no overlaps,
 /// nothing outside the walls) and, with initial.settle_time, runs the settling and takes its end
-/// state as the initial state at t = 0. Throws SceneError.
-void build_initial_state(Scene& scene);
+/// state as the initial state at t = 0. Throws SceneError; InterruptedBeforeStart (settling.hpp)
+/// when `stop` (a signal handler's flag, may be null) is raised while it settles.
+void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop = nullptr);
 
 /// Number of particles each fill will create (mass fractions resolved), per species.
 std::vector<std::size_t> fill_counts(const Scene& scene);

@@ -12,10 +12,13 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 
 #include "cli_support.hpp"
+#include "scenarios/run/output_estimate.hpp"
+#include "scenarios/scene/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace carom;
@@ -52,4 +55,42 @@ TEST_F(Cli, SignalWhileSettlingExitsInterruptedAndWritesNothing) {
   EXPECT_NE(message.find("initial.settle_time = 1e+06"), std::string::npos) << message;
   EXPECT_NE(message.find("nothing was written"), std::string::npos) << message;
   EXPECT_FALSE(fs::exists(dir_ / "s")) << "an interrupted settling must leave no output directory";
+}
+
+// output.snapshot_every = 1e-9 used to be accepted (31 MB in 8 s, and on). Now refused before
+// anything is written; `carom check` prints the estimate; output.max_bytes allows a big run.
+TEST_F(Cli, RunawayOutputIsRefusedBeforeAnythingIsWritten) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(carom("run " + gas + " --out r --set output.snapshot_every=1e-9"), 2) << out_;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_NE(out_.find("more than output.max_bytes = 10 GB (the default)"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("output.snapshot_every = 1e-09 s"), std::string::npos) << out_;
+  EXPECT_FALSE(fs::exists(dir_ / "r"));
+  EXPECT_EQ(carom("check " + gas), 0) << out_;
+  EXPECT_NE(out_.find("output: about "), std::string::npos) << out_;
+  EXPECT_NE(out_.find("9 snapshots of"), std::string::npos) << out_;  // k * 0.5 s up to 4 s
+  EXPECT_EQ(carom("check " + gas + " --set output.snapshot_every=1e-9"), 0) << out_;
+  EXPECT_NE(out_.find("a run refuses more than 10 GB"), std::string::npos) << out_;
+}
+
+// The estimate is near what a run writes: within a factor 1.25 of run.h5, run.xmf and
+// checkpoint.h5 together, for a run dominated by snapshot overhead (few particles, many
+// snapshots) and for one dominated by particle rows.
+TEST_F(Cli, OutputEstimateIsNearTheWrittenSize) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  for (const std::string every : {"0.01", "0.5"}) {
+    SCOPED_TRACE("snapshot_every = " + every);
+    const std::vector<std::string> overrides{"time.end=1.0", "output.snapshot_every=" + every};
+    const std::string out = "r" + every;
+    ASSERT_EQ(carom("run " + gas + " --quiet --out " + out + " --set time.end=1.0 --set output.snapshot_every=" + every),
+              0)
+        << out_;
+    const std::size_t particles = nlohmann::json::parse(read(dir_ / out / "summary.json"))["particles"];
+    const OutputEstimate e = estimate_output(load_scene((dir_ / gas).string(), overrides), particles);
+    double written = 0;
+    for (const char* name : {"run.h5", "run.xmf", "checkpoint.h5"}) written += double(fs::file_size(dir_ / out / name));
+    EXPECT_GT(e.bytes, written / 1.25) << "estimate " << e.bytes << " bytes, written " << written;
+    EXPECT_LT(e.bytes, written * 1.25) << "estimate " << e.bytes << " bytes, written " << written;
+  }
 }

@@ -8,10 +8,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "scenarios/run/output_estimate.hpp"
 #include "scenarios/scene/fill_capacity.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
@@ -169,4 +171,41 @@ TEST(InputErrors, LatticeFillCapacityIsExact) {
         kBox, "count = 20", "count = " + std::to_string(capacity + 1) + ", arrangement = \"" + arrangement + "\""));
     EXPECT_NE(one_more.find("so at most " + std::to_string(capacity) + " fit"), std::string::npos) << one_more;
   }
+}
+
+// output.snapshot_every = 1e-9 over 0.1 s is 1e8 snapshots: refused with the estimate and the key
+// that allows it; output.max_bytes raises the limit (and lifts the free-space check).
+TEST(InputErrors, RunawayOutputIsRefused) {
+  const std::string runaway = kBox + "[output]\nsnapshot_every = 1e-9\n";
+  const Scene scene = parse_scene(runaway, "bad.toml");
+  const OutputEstimate e = estimate_output(scene, 20);
+  EXPECT_GT(e.snapshots, 1e8);
+  EXPECT_GT(e.bytes, 1e11);
+  try {
+    check_output_size(scene, e, fs::temp_directory_path());
+    ADD_FAILURE() << "a runaway output was accepted";
+  } catch (const SceneError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("bad.toml:"), std::string::npos) << message;
+    EXPECT_NE(message.find("output.snapshot_every = 1e-09"), std::string::npos) << message;
+    EXPECT_NE(message.find("more than output.max_bytes = 10 GB (the default)"), std::string::npos) << message;
+  }
+  const Scene allowed = parse_scene(runaway + "max_bytes = 1e15\n", "ok.toml");
+  EXPECT_TRUE(allowed.output.max_bytes_given);
+  EXPECT_NO_THROW(check_output_size(allowed, estimate_output(allowed, 20), fs::temp_directory_path()));
+  // A file system too small for a run that the limit allows: refused too, naming the free space.
+  const Scene big = parse_scene(replace(kBox, "end = 0.1", "end = 1e6") + "[output]\nsnapshot_every = 1e-6\n", "big.toml");
+  const OutputEstimate huge = estimate_output(big, 20);
+  Scene limitless = big;
+  limitless.output.max_bytes = 1e30;  // as if the default were that large
+  try {
+    check_output_size(limitless, huge, fs::temp_directory_path());
+    ADD_FAILURE() << "an output of " << huge.bytes << " bytes fits the disk?";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("free on the file system"), std::string::npos) << error.what();
+  }
+  // The ordinary scene is far below both.
+  const Scene ordinary = parse_scene(kBox, "ok.toml");
+  EXPECT_NO_THROW(check_output_size(ordinary, estimate_output(ordinary, 20), fs::temp_directory_path()));
+  EXPECT_EQ(estimate_output(ordinary, 20).snapshots, 101);  // k * 0.001 s for k = 0..100, the last at the end
 }

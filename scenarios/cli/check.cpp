@@ -6,6 +6,7 @@
 #include "core/cell_grid.hpp"
 #include "scenarios/analysis/enskog.hpp"
 #include "fluid/drag.hpp"
+#include "scenarios/run/output_estimate.hpp"
 
 namespace carom {
 
@@ -206,6 +207,12 @@ std::string describe_scene(const Scene& scene) {
       << " s, samples every " << format_number(scene.output.sample_every) << " s, checkpoints "
       << (scene.output.checkpoint_every > 0 ? "every " + format_number(scene.output.checkpoint_every) + " s" : std::string("at the end"))
       << "; seed " << scene.seed << "\n";
+  const OutputEstimate e = estimate_output(scene, p.size());
+  out << "output: about " << byte_text(e.bytes) << " (" << format_number(e.snapshots) << " snapshots of "
+      << byte_text(e.snapshot_bytes) << ", " << format_number(e.samples) << " time-series rows of "
+      << byte_text(e.sample_bytes) << ", a checkpoint of " << byte_text(e.checkpoint_bytes) << "); a run refuses more than "
+      << byte_text(scene.output.max_bytes) << " (output.max_bytes"
+      << (scene.output.max_bytes_given ? ")" : ", the default) or more than the free space") << "\n";
   return out.str();
 }
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "scenarios/run/gas_run.hpp"
+#include "scenarios/run/output_estimate.hpp"
 #include "scenarios/run/progress.hpp"
 #include "scenarios/analysis/run_analysis.hpp"
 #include "scenarios/run/run_output.hpp"
@@ -212,6 +213,7 @@ int run_scene(Scene scene, const RunOptions& options) {
   // Everything that can be wrong with a scene is found before the first file is created. A
   // signal meanwhile (placing, settling) stops it with nothing written.
   install_stop_handlers();
+  check_output_size(scene, estimate_output(scene, planned_particle_count(scene)), options.out_dir);
   build_initial_state(scene, stop_flag());
   if (g_stop)
     throw InterruptedBeforeStart("interrupted while the particles were placed, before the run's t = 0: nothing "

@@ -63,9 +63,13 @@ struct InitialFile {
 
 /// When outputs are written (s of simulated time); 0 means never (except at the end).
 struct OutputSchedule {
-  double snapshot_every = 0;
-  double sample_every = 0;
-  double checkpoint_every = 0;
+  double snapshot_every = 0;    ///< s between particle snapshots.
+  double sample_every = 0;      ///< s between time-series rows.
+  double checkpoint_every = 0;  ///< s between checkpoints.
+  /// Largest estimated output a run may write, bytes (output.max_bytes; run/output_estimate.hpp).
+  double max_bytes = 1e10;
+  bool max_bytes_given = false;  ///< output.max_bytes set in the scene: also lifts the free-space check.
+  std::string max_bytes_where;   ///< "file:line" of output.max_bytes (of [output] or the scene when absent).
 };
 
 /// [flight]: how particles move between events (DESIGN.md section 2).

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -25,6 +27,23 @@ using namespace carom;
 using namespace carom_cli_test;
 
 extern char** environ;
+
+namespace {
+
+/// The figure names plot.py writes beside RUN.h5 ("energies", "gas", ...): the names in its
+/// ("NAME", lambda ...) list and those analysis_plots.py appends.
+std::set<std::string> plot_figure_names() {
+  const fs::path plots = fs::path(kScenes).parent_path() / "plots";
+  std::set<std::string> names;
+  const std::regex figure(R"rx(\("([a-z_]+)",\s*lambda)rx");
+  for (const char* script : {"plot.py", "analysis_plots.py"}) {
+    const std::string text = read(plots / script);
+    for (std::sregex_iterator it(text.begin(), text.end(), figure), end; it != end; ++it) names.insert((*it)[1]);
+  }
+  return names;
+}
+
+}  // namespace
 
 // SIGTERM while initial.settle_time runs (before t = 0) used to kill carom with no message
 // (exit 143). Now: exit 130, a message that nothing was written, and no output directory.
@@ -93,4 +112,26 @@ TEST_F(Cli, OutputEstimateIsNearTheWrittenSize) {
     EXPECT_GT(e.bytes, written / 1.25) << "estimate " << e.bytes << " bytes, written " << written;
     EXPECT_LT(e.bytes, written * 1.25) << "estimate " << e.bytes << " bytes, written " << written;
   }
+}
+
+// --overwrite used to leave the earlier run's PNGs beside the new run's outputs. It now removes
+// carom's own files (the outputs and every figure plot.py draws, read from plot.py itself) and
+// nothing else.
+TEST_F(Cli, OverwriteRemovesTheEarlierRunsFigures) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  ASSERT_EQ(carom("run " + gas + " --out r --quiet --set time.end=0.5"), 0) << out_;
+  const std::set<std::string> figures = plot_figure_names();
+  ASSERT_GE(figures.size(), 7u) << "plot.py's figure list not found";
+  for (const std::string& name : figures) std::ofstream(dir_ / "r" / ("run_" + name + ".png")) << "old";
+  std::ofstream(dir_ / "r" / "notes.txt") << "mine";
+  EXPECT_EQ(carom("run " + gas + " --out r --quiet --set time.end=0.5"), 2) << out_;  // refused without it
+  ASSERT_EQ(carom("run " + gas + " --out r --quiet --overwrite --set time.end=0.5"), 0) << out_;
+  for (const std::string& name : figures)
+    EXPECT_FALSE(fs::exists(dir_ / "r" / ("run_" + name + ".png"))) << "run_" << name << ".png left from the old run";
+  EXPECT_EQ(read(dir_ / "r" / "notes.txt"), "mine") << "a file carom did not write was touched";
+  // Figures alone (outputs removed by hand) still mark the directory as a run's.
+  for (const char* name : {"run.h5", "run.xmf", "checkpoint.h5", "summary.json", "report.md"}) fs::remove(dir_ / "r" / name);
+  std::ofstream(dir_ / "r" / "run_energies.png") << "old";
+  EXPECT_EQ(carom("run " + gas + " --out r --quiet --set time.end=0.5"), 2) << out_;
+  EXPECT_NE(out_.find("run_energies.png"), std::string::npos) << out_;
 }

@@ -178,9 +178,23 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
   return kExitOk;
 }
 
-/// Creates the output directory, refusing to mix a new run with an earlier one's files.
+/// Creates the output directory, refusing to mix a new run with an earlier one's files. Those
+/// are carom's own file names only: its outputs, and the figures scenarios/plots/plot.py draws
+/// beside run.h5 (RUN_NAME.png; a test checks this list against plot.py). --overwrite removes
+/// them; anything else in the directory is left alone.
 void prepare_output_directory(const fs::path& dir, bool overwrite) {
-  const char* outputs[] = {"run.h5", "run.xmf", "checkpoint.h5", "summary.json", "report.md"};
+  const char* outputs[] = {"run.h5",
+                           "run.xmf",
+                           "checkpoint.h5",
+                           "summary.json",
+                           "report.md",
+                           "run_energies.png",
+                           "run_collision_rates.png",
+                           "run_snapshot.png",
+                           "run_gas.png",
+                           "run_gas_field.png",
+                           "run_mixing.png",
+                           "run_collisions.png"};
   std::error_code error;
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");

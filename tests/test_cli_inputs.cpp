@@ -45,6 +45,36 @@ std::set<std::string> plot_figure_names() {
 
 }  // namespace
 
+// Each of these used to give a message that misled (or a wrong exit code); each now says what
+// is wrong, exit 2.
+TEST_F(Cli, InputErrorsSayWhatIsWrong) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  fs::create_directories(dir_ / "folder");
+  EXPECT_EQ(carom("check folder"), 2) << out_;
+  EXPECT_NE(out_.find("folder: is a directory, not a scene file"), std::string::npos) << out_;
+  scene("sweep.toml", "[sweep]\nscene = \"gas.toml\"\nseeds = [1, 2]\n");
+  EXPECT_EQ(carom("check sweep.toml"), 2) << out_;
+  EXPECT_NE(out_.find("sweep.toml:1: this is a sweep file"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("run it with `carom sweep sweep.toml`"), std::string::npos) << out_;
+  EXPECT_EQ(carom("run " + gas + " --seed -1 --out r"), 2) << out_;
+  EXPECT_NE(out_.find("--seed -1: a seed must be a non-negative integer"), std::string::npos) << out_;
+  EXPECT_EQ(out_.find("18446744073709551615"), std::string::npos) << out_;
+  EXPECT_FALSE(fs::exists(dir_ / "r"));
+  EXPECT_EQ(carom("check " + gas + " --seed 7"), 0) << out_;
+  EXPECT_NE(out_.find("seed 7"), std::string::npos) << out_;
+  // carom info on something that is not a run file: a usage error (2), not a failed run (1).
+  EXPECT_EQ(carom("info " + gas), 2) << out_;
+  EXPECT_NE(out_.find("gas.toml: not an HDF5 file"), std::string::npos) << out_;
+  EXPECT_EQ(carom("info folder"), 2) << out_;
+  EXPECT_NE(out_.find("is a directory"), std::string::npos) << out_;
+  // The neighbour grid's levels: the default is the cost model, not "-1 x the diameter above".
+  EXPECT_EQ(carom("check " + gas), 0) << out_;
+  EXPECT_EQ(out_.find("-1 x"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("cost model"), std::string::npos) << out_;
+  EXPECT_EQ(carom("check " + gas + " --set engine.grid_level_ratio=0.5"), 0) << out_;
+  EXPECT_NE(out_.find("a diameter below 0.5 x the largest of a level starts a new level"), std::string::npos) << out_;
+}
+
 // SIGTERM while initial.settle_time runs (before t = 0) used to kill carom with no message
 // (exit 143). Now: exit 130, a message that nothing was written, and no output directory.
 TEST_F(Cli, SignalWhileSettlingExitsInterruptedAndWritesNothing) {
@@ -134,4 +164,27 @@ TEST_F(Cli, OverwriteRemovesTheEarlierRunsFigures) {
   std::ofstream(dir_ / "r" / "run_energies.png") << "old";
   EXPECT_EQ(carom("run " + gas + " --out r --quiet --set time.end=0.5"), 2) << out_;
   EXPECT_NE(out_.find("run_energies.png"), std::string::npos) << out_;
+}
+
+// carom info used to dump the raw HDF5 tree; it now says what a person asks first, and --tree
+// gives the tree.
+TEST_F(Cli, InfoSummarisesARun) {
+  const std::string gas = scene("gas.toml", kSmallGas);
+  ASSERT_EQ(carom("run " + gas + " --out r --quiet --set time.end=1.0 --seed 3"), 0) << out_;
+  ASSERT_EQ(carom("info r/run.h5"), 0) << out_;
+  for (const std::string piece : {"r/run.h5: carom run file", "scene \"gas\", carom ", "seed 3",
+                                  "species: a: 244 particles of d = 1 m; b: 100 particles of d = 0.6 m",
+                                  "snapshots: 3, t = 0 to 1 s", "time series: 11 rows, t = 0 to 1 s",
+                                  "status (summary.json): completed", "collision rate per particle (1/s): a-a "})
+    EXPECT_NE(out_.find(piece), std::string::npos) << "'" << piece << "' not in:\n" << out_;
+  EXPECT_EQ(out_.find("/snapshots/"), std::string::npos) << "the summary lists the raw tree:\n" << out_;
+  ASSERT_EQ(carom("info --tree r/run.h5"), 0) << out_;
+  EXPECT_NE(out_.find("/snapshots/"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("groups, "), std::string::npos) << out_;
+  ASSERT_EQ(carom("info r/checkpoint.h5"), 0) << out_;
+  EXPECT_NE(out_.find("carom checkpoint file"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("state of method event_driven at t = 1 s, 344 particles"), std::string::npos) << out_;
+  fs::remove(dir_ / "r" / "summary.json");
+  ASSERT_EQ(carom("info r/run.h5"), 0) << out_;
+  EXPECT_NE(out_.find("no summary.json beside the file"), std::string::npos) << out_;
 }

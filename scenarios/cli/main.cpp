@@ -3,7 +3,7 @@
 //   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--quiet] [--overwrite]
 //   carom resume DIR [--end T] [--quiet]
 //   carom check SCENE [--set key=value ...] [--seed N]
-//   carom info FILE.h5
+//   carom info FILE.h5 [--tree]
 //   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
 //
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
@@ -61,7 +61,9 @@ int main(int argc, char** argv) {
   CLI::Option* check_seed = check->add_option("--seed", seed_text, "random seed, an integer >= 0");
 
   CLI::App* info = app.add_subcommand("info", "describe a run file or checkpoint");
-  info->add_option("file", info_path, "HDF5 file (run.h5 or checkpoint.h5)")->required();
+  info->add_option("file", info_path, "HDF5 file (run.h5, checkpoint.h5 or a sweep's summary.h5)")->required();
+  bool tree = false;
+  info->add_flag("--tree", tree, "list every group and dataset of the file (the raw HDF5 tree)");
 
   SweepOptions sweep_options;
   std::string sweep_out;
@@ -118,8 +120,10 @@ int main(int argc, char** argv) {
       return resume_run(resume_dir, end, quiet);
     }
     if (*info) {
-      if (!std::filesystem::exists(info_path)) throw SceneError(info_path + ": no such file");
-      print_file_info(info_path, std::cout);
+      if (tree)
+        print_file_tree(info_path, std::cout);
+      else
+        print_file_info(info_path, std::cout);
       return kExitOk;
     }
   } catch (const InterruptedBeforeStart& e) {

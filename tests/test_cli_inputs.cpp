@@ -30,6 +30,14 @@ extern char** environ;
 
 namespace {
 
+/// kSmallGas with one species only (a: d = 1 m, 244 particles) and a mixing analysis.
+std::string one_species_gas() {
+  std::string text = kSmallGas;
+  const std::string b = "[[species]]\nname = \"b\"\ndiameter = 0.6\ndensity = 1.909859317102744\nfill = { count = 100 }\n";
+  text.erase(text.find(b), b.size());
+  return text + "[analysis]\nmixing = { species = \"a\", cells = [2, 2, 2] }\n";
+}
+
 /// The figure names plot.py writes beside RUN.h5 ("energies", "gas", ...): the names in its
 /// ("NAME", lambda ...) list and those analysis_plots.py appends.
 std::set<std::string> plot_figure_names() {
@@ -187,4 +195,27 @@ TEST_F(Cli, InfoSummarisesARun) {
   fs::remove(dir_ / "r" / "summary.json");
   ASSERT_EQ(carom("info r/run.h5"), 0) << out_;
   EXPECT_NE(out_.find("no summary.json beside the file"), std::string::npos) << out_;
+}
+
+// report.md of a scene without fines or gas used to carry the fines "Mechanism" paragraph and
+// "d = 1000 mm" for a 1 m sphere; it now says only what applies.
+TEST_F(Cli, ReportSaysOnlyWhatApplies) {
+  const std::string one = scene("one.toml", one_species_gas());
+  ASSERT_EQ(carom("run " + one + " --out one --quiet --set time.end=1.0"), 0) << out_;
+  const std::string single = read(dir_ / "one" / "report.md");
+  EXPECT_NE(single.find("244 a (d = 1 m)"), std::string::npos) << single;
+  EXPECT_EQ(single.find("1000 mm"), std::string::npos) << single;
+  EXPECT_EQ(single.find("Mechanism"), std::string::npos) << single;
+  EXPECT_EQ(single.find("Fines"), std::string::npos) << single;
+  EXPECT_NE(single.find("fit of M = 1 - (1 - M0) exp(-k t) from the measured M0 = "), std::string::npos) << single;
+  // Two species without a gas or gravity: the collision part only, and no per-weight column.
+  const std::string two = scene("two.toml", kSmallGas);
+  ASSERT_EQ(carom("run " + two + " --out two --quiet --set time.end=1.0"), 0) << out_;
+  const std::string pair = read(dir_ / "two" / "report.md");
+  EXPECT_NE(pair.find("## Mechanism"), std::string::npos) << pair;
+  EXPECT_NE(pair.find("only through collisions"), std::string::npos) << pair;
+  EXPECT_EQ(pair.find("pore volume"), std::string::npos) << pair;
+  EXPECT_EQ(pair.find("gas velocity seen"), std::string::npos) << pair;
+  EXPECT_EQ(pair.find("weight"), std::string::npos) << pair;
+  EXPECT_NE(pair.find("| a-b | "), std::string::npos) << pair;
 }

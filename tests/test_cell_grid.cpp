@@ -9,6 +9,8 @@
 // (a measure-zero set that round-off decides either way) cannot make the test flaky.
 #include <gtest/gtest.h>
 
+#include <cctype>
+
 #include <cmath>
 #include <set>
 
@@ -46,6 +48,8 @@ struct GridCase {
   int count;
   double level_ratio;
 };
+/// How ctest lists a case (instead of its bytes).
+void PrintTo(const GridCase& c, std::ostream* out) { *out << c.name; }
 
 class GridOracle : public ::testing::TestWithParam<GridCase> {};
 
@@ -100,7 +104,13 @@ INSTANTIATE_TEST_SUITE_P(
         GridCase{"1:10 one grid", {1.0, 0.1}, Vec3(9, 9, 9), {true, true, true}, 2000, 0.0},
         GridCase{"1:10 fine level ratio", {1.0, 0.1, 0.3}, Vec3(9, 9, 9), {true, true, false}, 3000, 0.9},
         GridCase{"four cells per axis", {1.0, 0.2}, Vec3(4.3, 4.9, 4.1), {true, true, true}, 600, 0.5}),
-    [](const ::testing::TestParamInfo<GridCase>& info) { return "case" + std::to_string(info.index); });
+    // The case's description as a test name (letters and digits; everything else an underscore).
+    [](const ::testing::TestParamInfo<GridCase>& info) {
+      std::string name = info.param.name;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
 
 // Moving a particle across faces (with periodic wraps) keeps it findable and its shift right.
 TEST(GridCrossing, CrossingFacesWrapsPeriodicAxes) {

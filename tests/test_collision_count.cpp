@@ -233,6 +233,8 @@ struct CountCase {
   double restitution;
   std::uint64_t seed;
 };
+/// How ctest lists a case (instead of its bytes).
+void PrintTo(const CountCase& c, std::ostream* out) { *out << "e = " << c.restitution << ", seed " << c.seed; }
 
 class CollisionCount : public ::testing::TestWithParam<CountCase> {};
 

@@ -72,7 +72,8 @@ TEST_P(SettlingBead, ReachesTerminalVelocityAndFollowsTheForceBalance) {
   std::printf("%s: terminal velocity %.5f m/s (reference 3.706)\n", GetParam(), terminal);
 }
 
-INSTANTIATE_TEST_SUITE_P(FlightModels, SettlingBead, ::testing::Values("relax", "kick"));
+INSTANTIATE_TEST_SUITE_P(FlightModels, SettlingBead, ::testing::Values("relax", "kick"),
+                         [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // A fixed fcc packing (porosity 0.45) with air at U = 0.1 m/s: at steady state the frictional
 // pressure gradient inside the bed equals Ergun's at the bed's porosity (the closure is Ergun,

@@ -60,6 +60,8 @@ struct ShippedScene {
   const char* file;
   std::size_t particles;  // what the scene's fills produce (documented in the files' comments)
 };
+/// How ctest lists a case (instead of its bytes).
+void PrintTo(const ShippedScene& s, std::ostream* out) { *out << s.file << ", " << s.particles << " particles"; }
 
 class ShippedScenes : public ::testing::TestWithParam<ShippedScene> {};
 

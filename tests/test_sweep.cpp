@@ -405,6 +405,23 @@ TEST_F(Sweep, SweepFileErrorsNameFileLineAndKey) {
   EXPECT_FALSE(fs::exists(dir_ / "ok.out")) << "--dry-run wrote outputs";
 }
 
+// A case whose value the scene refuses used to be reported "(set on the command line)"; the
+// message now names the sweep file's line where the value is written (vary values and set).
+TEST_F(Sweep, CaseErrorsNameTheSweepFileLine) {
+  const std::string head = "[sweep]\nscene = \"" + kGas + "\"\n";
+  file("bad.toml", head + "[[sweep.vary]]\nkey = \"collisions.default.e\"\n\nvalues = [0.9, 1.5]\n");
+  EXPECT_EQ(carom("sweep bad.toml"), 2) << out_;
+  EXPECT_NE(out_.find("bad.toml:6 (for "), std::string::npos) << out_;
+  EXPECT_NE(out_.find("collisions.default.e = 1.5 is outside the allowed range [0, 1]"), std::string::npos) << out_;
+  EXPECT_EQ(out_.find("command line"), std::string::npos) << out_;
+  file("bad.toml", head + "\nset = { \"time.end\" = -2.0 }\n");
+  EXPECT_EQ(carom("sweep bad.toml"), 2) << out_;
+  EXPECT_NE(out_.find("bad.toml:4 (for "), std::string::npos) << out_;
+  EXPECT_NE(out_.find("time.end = -2"), std::string::npos) << out_;
+  EXPECT_EQ(out_.find("command line"), std::string::npos) << out_;
+  EXPECT_FALSE(fs::exists(dir_ / "bad.out")) << "a bad sweep wrote outputs";
+}
+
 // An OUT made by one sweep file is refused to a changed one (different overrides for case 0),
 // naming the case: results of two sweeps are never mixed.
 TEST_F(Sweep, ChangedSweepFileIsRefused) {

@@ -38,6 +38,10 @@ struct ExactCase {
   Vec3 impulse, v1, v2;
   double w1z, w2z, energy_after;
 };
+/// How ctest lists a case (instead of its bytes).
+void PrintTo(const ExactCase& c, std::ostream* out) {
+  *out << "e = " << c.e << ", mu = " << c.mu << ", beta0 = " << c.beta0 << (c.sliding ? ", sliding" : ", sticking");
+}
 
 class WaltonExact : public ::testing::TestWithParam<ExactCase> {};
 
@@ -71,7 +75,11 @@ TEST_P(WaltonExact, MatchesTable) {
 INSTANTIATE_TEST_SUITE_P(
     ValidationTable, WaltonExact,
     ::testing::Values(ExactCase{0.9, 0.3, 0.4, false, {-1.9, -0.3, 0}, {-0.9, 0.2, 0}, {0.9, 0.3, 0}, 0.5, -1.5, 1.0},
-                      ExactCase{0.9, 0.1, 0.4, true, {-1.9, -0.19, 0}, {-0.9, 0.31, 0}, {0.9, 0.19, 0}, 1.05, -0.95, 0.97635}));
+                      ExactCase{0.9, 0.1, 0.4, true, {-1.9, -0.19, 0}, {-0.9, 0.31, 0}, {0.9, 0.19, 0}, 1.05, -0.95, 0.97635}),
+    // Named for ctest: the table's two rows differ in whether the contact slides.
+    [](const ::testing::TestParamInfo<ExactCase>& info) {
+      return std::string(info.param.sliding ? "sliding" : "sticking");
+    });
 
 Vec3 random_unit(Rng& rng) {
   for (;;) {

@@ -24,6 +24,11 @@ std::string fixed(double x) {
   return out.str();
 }
 
+/// A diameter for report.md in the unit that reads best: mm from 0.1 mm to 10 cm, else m.
+std::string diameter_text(double d) {
+  return d >= 1e-4 && d < 0.1 ? fixed(d * 1e3) + " mm" : fixed(d) + " m";
+}
+
 /// JSON object {"key": value, ...} from names and values.
 std::string object(const std::vector<std::pair<std::string, double>>& entries) {
   std::string text = "{";
@@ -46,6 +51,7 @@ std::string RunAnalysis::summary_json(const CollisionMethod& sim) const {
       << ", \"lacey_start\": " << json_number(c.lacey_start)
       << ", \"lacey_end\": " << json_number(c.lacey_end)
       << ", \"rate\": " << json_number(c.rate.valid ? c.rate.rate : NAN)
+      << ", \"fit_start\": " << json_number(c.rate.start)
       << ", \"time_to_m08_fit\": " << json_number(c.rate.valid ? c.rate.time_to_08_fit : NAN)
       << ", \"time_to_m08\": " << json_number(c.rate.time_to_08_data)
       << ", \"fit_rms\": " << json_number(c.rate.rms_residual) << "},\n";
@@ -111,7 +117,7 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
     << " samples. Particles:";
   for (std::size_t s = 0; s < S; ++s)
     r << (s ? "," : "") << " " << c.count[s] << " " << system.species[s].name
-      << " (d = " << fixed(system.species[s].diameter * 1e3) << " mm)";
+      << " (d = " << diameter_text(system.species[s].diameter) << ")";
   r << ".\n\n";
   if (c.mixing) {
     r << "## Mixing of the " << system.species[scene_.analysis.mixing_species].name
@@ -121,8 +127,8 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
       << " sample cells: " << fixed(c.lacey_start) << " at t = 0, " << fixed(c.lacey_end)
       << " at the end (0 segregated, 1 random).\n\n"
       << "| quantity | value |\n|---|---|\n"
-      << "| mixing rate k, fit of M = 1 - exp(-k t) | " << fixed(c.rate.valid ? c.rate.rate : NAN)
-      << " 1/s |\n"
+      << "| mixing rate k, least-squares fit of M = 1 - (1 - M0) exp(-k t) from the measured M0 = "
+      << fixed(c.rate.start) << " | " << fixed(c.rate.valid ? c.rate.rate : NAN) << " 1/s |\n"
       << "| time to M = 0.8, from the fit | " << fixed(c.rate.valid ? c.rate.time_to_08_fit : NAN)
       << " s |\n"
       << "| time to M = 0.8, first reached in the data | " << fixed(c.rate.time_to_08_data)
@@ -158,35 +164,45 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
       << system.species[large_].name << ") / (sum): " << fixed(c.segregation_start) << " at t = 0, "
       << fixed(c.segregation_end) << " at the end, " << fixed(c.segregation_mean)
       << " on average (positive: the small particles above).\n";
-  r << "\n## Mechanism\n\n"
-       "Fines can speed up the mixing of the large particles in two ways. (1) They take pore "
-       "volume, so "
-       "the gas flows faster between the large particles and drags them harder: compare the "
-       "interstitial "
-       "gas velocity, the porosity and the gas force (drag plus pressure gradient) per weight each "
-       "species feels. (2) They collide with the "
-       "large particles and give them momentum: compare the collision impulse per second a large "
-       "particle "
-       "receives from each species with its weight.\n\n"
-       "| species | gas velocity seen (m/s, vertical) | porosity seen | gas force / weight "
-       "(vertical) |\n"
-       "|---|---|---|---|\n";
+  // Mechanism: how smaller particles (fines) may act on the larger ones, through the gas and
+  // through collisions. Only what applies: the gas part with a gas, the collision part with two
+  // or more species, the per-weight column under gravity.
+  const bool several = S >= 2;
+  bool weighed = false;
+  for (double w : c.weight) weighed |= w > 0;
+  if (!several && !c.gas) return r.str();
+  r << "\n## " << (several ? "Mechanism" : "Gas seen by the particles") << "\n\n";
+  if (several && c.gas)
+    r << "Fines can speed up the mixing of the large particles in two ways. (1) They take pore volume, so the gas "
+         "flows faster between the large particles and drags them harder: compare the interstitial gas velocity, "
+         "the porosity and the gas force (drag plus pressure gradient) per weight each species feels. (2) They "
+         "collide with the large particles and give them momentum: compare the collision impulse per second a "
+         "large particle receives from each species"
+      << (weighed ? " with its weight" : "") << ".\n\n";
+  else if (several)
+    r << "Without a gas the species act on each other only through collisions: the collision impulse per second a "
+         "particle receives from each species"
+      << (weighed ? ", beside its weight," : "") << " says how strongly each one agitates it.\n\n";
+  if (c.gas) {
+    r << "| species | gas velocity seen (m/s, vertical) | porosity seen | gas force / weight (vertical) |\n"
+         "|---|---|---|---|\n";
+    for (std::size_t s = 0; s < S; ++s)
+      r << "| " << system.species[s].name << " | " << fixed(c.gas_velocity[s][vertical_]) << " | "
+        << fixed(c.porosity[s]) << " | " << (c.weight[s] > 0 ? fixed(c.gas_force[s][vertical_] / c.weight[s]) : "")
+        << " |\n";
+  }
+  if (!several) return r.str();
+  r << "\n| pair (receiver-giver) | collision impulse rate per particle (N) |"
+    << (weighed ? " impulse rate / weight (dimensionless) |\n|---|---|---|\n" : "\n|---|---|\n");
   for (std::size_t s = 0; s < S; ++s)
-    r << "| " << system.species[s].name << " | "
-      << (c.gas ? fixed(c.gas_velocity[s][vertical_]) : "no gas") << " | "
-      << (c.gas ? fixed(c.porosity[s]) : "") << " | "
-      << (c.gas && c.weight[s] > 0 ? fixed(c.gas_force[s][vertical_] / c.weight[s]) : "") << " |\n";
-  r << "\n| pair (receiver-giver) | collision impulse rate per particle (N) | per weight "
-       "|\n|---|---|---|\n";
-  for (std::size_t s = 0; s < S; ++s)
-    for (std::size_t t = 0; t < S; ++t)
-      r << "| " << pair_name(system, s, t) << " | " << fixed(c.impulse_rate[s * S + t]) << " | "
-        << fixed(c.weight[s] > 0 ? c.impulse_rate[s * S + t] / c.weight[s] : NAN) << " |\n";
-  r << "\nThe impulse rate counts |J| of every collision (a gross rate: impulses in opposite "
-       "directions do not "
-       "cancel), so it measures agitation, not a net force. Compare runs with and without fines (a "
-       "sweep) "
-       "to see which of the two changes with the fines fraction.\n";
+    for (std::size_t t = 0; t < S; ++t) {
+      r << "| " << pair_name(system, s, t) << " | " << fixed(c.impulse_rate[s * S + t]) << " |";
+      if (weighed) r << " " << fixed(c.weight[s] > 0 ? c.impulse_rate[s * S + t] / c.weight[s] : NAN) << " |";
+      r << "\n";
+    }
+  r << "\nThe impulse rate counts |J| of every collision (a gross rate: impulses in opposite directions do not "
+       "cancel), so it measures agitation, not a net force. Compare runs with and without fines (a sweep) to see "
+       "which of the two changes with the fines fraction.\n";
   return r.str();
 }
 

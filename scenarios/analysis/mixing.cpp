@@ -80,30 +80,32 @@ LaceyIndex lacey_index(const std::vector<Vec3>& positions, const std::vector<cha
 
 namespace {
 
-/// The points of a mixing curve that a fit uses, in time order.
+/// The points of a mixing curve that a fit uses, in time order, and the start M0 of the model
+/// M(t) = 1 - (1 - M0) exp(-k t).
 struct MixingCurve {
   std::vector<double> time, lacey;
+  double unmixed_start = 1.0;  ///< 1 - M0.
 
   /// exp(-k t), with exp(-k 0) = 1 also for k = +inf.
   static double decay(double rate, double time) {
     return time == 0.0 ? 1.0 : std::exp(-rate * time);
   }
 
-  /// Sum of squared residuals of 1 - exp(-k t).
+  /// Sum of squared residuals of 1 - (1 - M0) exp(-k t).
   double squared_residuals(double rate) const {
     double sum = 0.0;
     for (std::size_t i = 0; i < time.size(); ++i) {
-      const double residual = lacey[i] - 1.0 + decay(rate, time[i]);
+      const double residual = lacey[i] - 1.0 + unmixed_start * decay(rate, time[i]);
       sum += residual * residual;
     }
     return sum;
   }
-  /// sum_i r_i t_i exp(-k t_i) = -(1/2) dF/dk: positive where F falls with k.
+  /// sum_i r_i t_i exp(-k t_i) = -dF/dk / (2 (1 - M0)): positive where F falls with k.
   double normal_equation(double rate) const {
     double sum = 0.0;
     for (std::size_t i = 0; i < time.size(); ++i) {
       const double unmixed = decay(rate, time[i]);
-      sum += (lacey[i] - 1.0 + unmixed) * time[i] * unmixed;
+      sum += (lacey[i] - 1.0 + unmixed_start * unmixed) * time[i] * unmixed;
     }
     return sum;
   }
@@ -122,7 +124,7 @@ double first_crossing(const MixingCurve& curve, double level) {
 
 }  // namespace
 
-MixingRate fit_mixing_rate(const std::vector<double>& times, const std::vector<double>& lacey) {
+MixingRate fit_mixing_rate(const std::vector<double>& times, const std::vector<double>& lacey, double start) {
   require_same_length(times.size(), lacey.size(), "fit_mixing_rate");
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < times.size(); ++i)
@@ -130,22 +132,23 @@ MixingRate fit_mixing_rate(const std::vector<double>& times, const std::vector<d
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
   MixingCurve curve;
+  curve.unmixed_start = 1.0 - start;
   for (std::size_t i : order) {
     curve.time.push_back(times[i]);
     curve.lacey.push_back(lacey[i]);
   }
 
-  MixingRate result{kNaN, kNaN, first_crossing(curve, 0.8), kNaN, curve.time.size(), false};
+  MixingRate result{kNaN, kNaN, first_crossing(curve, 0.8), kNaN, curve.time.size(), false, start};
   const auto first_positive =
       std::find_if(curve.time.begin(), curve.time.end(), [](double t) { return t > 0.0; });
-  if (curve.time.size() < 3 || first_positive == curve.time.end()) return result;
+  if (curve.time.size() < 3 || first_positive == curve.time.end() || !(start < 0.8)) return result;
 
   // k over the range the data can resolve.
   const LogFit fit = minimize_on_log_range(curve, std::log(1e-4 / curve.time.back()),
                                            std::log(1e3 / *first_positive));
   result.rate = fit.value;
   result.valid = fit.valid;
-  result.time_to_08_fit = std::log(5.0) / result.rate;
+  result.time_to_08_fit = std::log((1.0 - start) / 0.2) / result.rate;
   result.rms_residual = std::sqrt(curve.squared_residuals(result.rate) / double(curve.time.size()));
   return result;
 }

@@ -52,17 +52,22 @@ LaceyIndex lacey_index(const std::vector<Vec3>& positions, const std::vector<cha
 /// Least-squares fit of a mixing curve M(t) = 1 - exp(-k t).
 struct MixingRate {
   double rate;  ///< k, 1/s; 0 or +inf when the data pin it at the end of the search range.
-  double time_to_08_fit;  ///< ln(5)/k: when the fitted curve reaches M = 0.8, s.
+  double time_to_08_fit;  ///< ln((1 - M0)/0.2)/k: when the fitted curve reaches M = 0.8, s.
   double
       time_to_08_data;  ///< First time the data reach 0.8 (linear interpolation), s; NaN if never.
   double rms_residual;  ///< sqrt(mean (M_i - fit_i)^2) over the points used.
   std::size_t points;   ///< Points used (finite time >= 0 and finite M).
   bool valid;           ///< At least 3 points and k determined inside the search range.
+  double start;         ///< M0, the start of the fitted curve (the measured M(0), or 0).
 };
 
-/// Fits M(t) = 1 - exp(-k t) to Lacey indices `lacey` at `times` (s, measured from the tagging
-/// instant) by least squares in M. Points with a non-finite value or a negative time are skipped;
-/// values above 1 (noise about a mixed state) are kept as they are.
+/// Fits M(t) = 1 - (1 - M0) exp(-k t) to Lacey indices `lacey` at `times` (s, measured from the
+/// tagging instant) by least squares in M, with M0 = `start` fixed: the measured M(0) (sample
+/// cells that do not split the bed exactly at the tagging height give M(0) > 0; forcing the
+/// curve through 0 would bend k to fit a start the data do not have), or 0 for the classic
+/// 1 - exp(-k t). Points with a non-finite value or a negative time are skipped; values above
+/// 1 (noise about a mixed state) are kept as they are. A start of 0.8 or more leaves nothing
+/// to fit (rate NaN, valid false).
 ///
 /// The solver cannot diverge: the sum of squares is scanned over a logarithmic grid of k from
 /// 1e-4/t_max (mixing invisible within the data) to 1e3/t_min (mixed before the first positive
@@ -74,7 +79,8 @@ struct MixingRate {
 /// positive time, rate and time_to_08_fit are NaN and valid is false; time_to_08_data is computed
 /// from whatever points there are (taken in time order).
 /// Throws std::invalid_argument if times and lacey differ in length.
-MixingRate fit_mixing_rate(const std::vector<double>& times, const std::vector<double>& lacey);
+MixingRate fit_mixing_rate(const std::vector<double>& times, const std::vector<double>& lacey,
+                           double start = 0.0);
 
 /// Height segregation index of species a against species b:
 ///   S = 2 (h_a - h_b)/(h_a + h_b),

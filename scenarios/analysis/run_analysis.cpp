@@ -260,8 +260,10 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
   };
   if (const auto* lacey = series("lacey_index")) {
     c.mixing = true;
-    c.rate = fit_mixing_rate(times_, *lacey);
     c.lacey_start = lacey->front();
+    // The fit starts where the data start (the measured M(0)), not at M = 0.
+    const double start = times_.front() == 0.0 && std::isfinite(c.lacey_start) ? c.lacey_start : 0.0;
+    c.rate = fit_mixing_rate(times_, *lacey, start);
     c.lacey_end = lacey->back();
   }
   if (const auto* msd = series("axial_msd")) {

@@ -7,6 +7,7 @@
 #include "core/cell_grid.hpp"
 #include "scenarios/analysis/enskog.hpp"
 #include "fluid/drag.hpp"
+#include "scenarios/run/output_estimate.hpp"
 
 namespace carom {
 
@@ -164,8 +165,14 @@ std::string describe_scene(const Scene& scene) {
 
   if (p.size() > 0 && scene.method.kind == MethodKind::EventDriven) {
     HierarchicalGrid grid(d, p.radius, scene.method.event_driven.grid_level_ratio);
-    out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "")
-        << " (a new level below " << format_number(scene.method.event_driven.grid_level_ratio) << " x the diameter above)\n";
+    const double ratio = scene.method.event_driven.grid_level_ratio;
+    out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "") << " ("
+        << (ratio < 0.0   ? std::string("sizes split into levels by the grid's cost model, the split with the least "
+                                        "expected prediction work; engine.grid_level_ratio sets a fixed ratio")
+            : ratio == 0.0 ? std::string("one grid for every size: engine.grid_level_ratio = 0")
+                           : "a diameter below " + format_number(ratio) +
+                                 " x the largest of a level starts a new level: engine.grid_level_ratio")
+        << ")\n";
     for (std::size_t l = 0; l < grid.levels().size(); ++l) {
       const auto& level = grid.levels()[l];
       out << "    level " << l << ": " << level.cells[0] << " x " << level.cells[1] << " x " << level.cells[2]
@@ -204,6 +211,12 @@ std::string describe_scene(const Scene& scene) {
       << " s, samples every " << format_number(scene.output.sample_every) << " s, checkpoints "
       << (scene.output.checkpoint_every > 0 ? "every " + format_number(scene.output.checkpoint_every) + " s" : std::string("at the end"))
       << "; seed " << scene.seed << "\n";
+  const OutputEstimate e = estimate_output(scene, p.size());
+  out << "output: about " << byte_text(e.bytes) << " (" << format_number(e.snapshots) << " snapshots of "
+      << byte_text(e.snapshot_bytes) << ", " << format_number(e.samples) << " time-series rows of "
+      << byte_text(e.sample_bytes) << ", a checkpoint of " << byte_text(e.checkpoint_bytes) << "); a run refuses more than "
+      << byte_text(scene.output.max_bytes) << " (output.max_bytes"
+      << (scene.output.max_bytes_given ? ")" : ", the default) or more than the free space") << "\n";
   return out.str();
 }
 

@@ -1,158 +1,203 @@
+// `carom info FILE.h5`: a run file, checkpoint or sweep summary described in a few lines.
 #include "scenarios/cli/info.hpp"
 
 #include <hdf5.h>
 
-#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
-#include <stdexcept>
 #include <vector>
+
+#include "core/hdf5.hpp"
+#include "scenarios/run/output_estimate.hpp"
+#include "scenarios/scene/scene_reader.hpp"
 
 namespace carom {
 
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
 namespace {
 
-struct WalkState {
-  std::ostream* out;
-  std::size_t groups = 0, datasets = 0;
-  std::size_t snapshots = 0;          ///< Groups directly under /snapshots.
-  std::string first_snapshot;         ///< Only this snapshot's contents are listed.
-  double first_time = 0, last_time = 0;
-};
-
-/// The `time` attribute of a group, or NaN.
-double time_attribute(hid_t group) {
-  double time = NAN;
-  if (H5Aexists(group, "time") > 0) {
-    const hid_t attribute = H5Aopen(group, "time", H5P_DEFAULT);
-    H5Aread(attribute, H5T_NATIVE_DOUBLE, &time);
-    H5Aclose(attribute);
-  }
-  return time;
+/// Four significant digits: headline numbers, not data.
+std::string short_number(double x) {
+  std::ostringstream out;
+  out.precision(4);
+  out << x;
+  return out.str();
 }
 
-/// Text of a scalar or short 1-D attribute (numbers or strings).
-std::string attribute_text(hid_t attribute) {
-  const hid_t type = H5Aget_type(attribute);
-  const hid_t space = H5Aget_space(attribute);
-  const hssize_t n = H5Sget_simple_extent_npoints(space);
-  std::string text;
-  const H5T_class_t kind = H5Tget_class(type);
-  if (kind == H5T_STRING) {
-    if (H5Tis_variable_str(type) > 0) {
-      char* value = nullptr;
-      const hid_t memory = H5Tcopy(H5T_C_S1);
-      H5Tset_size(memory, H5T_VARIABLE);
-      if (n == 1 && H5Aread(attribute, memory, &value) >= 0 && value) {
-        text = value;
-        H5free_memory(value);
-      }
-      H5Tclose(memory);
-    } else {
-      std::vector<char> buffer(H5Tget_size(type) * static_cast<std::size_t>(std::max<hssize_t>(n, 1)) + 1, '\0');
-      if (H5Aread(attribute, type, buffer.data()) >= 0) text = buffer.data();
-    }
-    text = std::string(1, '"').append(text).append(1, '"');
-  } else if ((kind == H5T_INTEGER || kind == H5T_FLOAT) && n >= 1 && n <= 16) {
-    std::vector<double> values(static_cast<std::size_t>(n));
-    if (H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()) >= 0) {
-      for (hssize_t i = 0; i < n; ++i) {
-        char buffer[32];
-        std::snprintf(buffer, sizeof(buffer), "%.10g", values[static_cast<std::size_t>(i)]);
-        text += (i ? ", " : "") + std::string(buffer);
-      }
-      if (n > 1) text = std::string(1, '[').append(text).append(1, ']');
-    }
-  } else {
-    std::ostringstream count;
-    count << '(' << n << " values)";
-    text = count.str();
+/// A root attribute as text ("" when absent).
+std::string text_attribute(const h5::Object& object, const std::string& name) {
+  if (!object.has_attribute(name)) return "";
+  try {
+    return object.attribute<std::string>(name);
+  } catch (const std::exception&) {
+    return short_number(object.attribute<double>(name));
   }
-  H5Sclose(space);
-  H5Tclose(type);
+}
+
+/// "3 large, 2407 fines" from species names and counts (counts by species index).
+std::string species_text(const std::vector<std::string>& names, const std::vector<double>& diameters,
+                         const std::vector<std::uint64_t>& counts) {
+  std::string text;
+  for (std::size_t s = 0; s < names.size(); ++s) {
+    text += (s ? "; " : "") + names[s] + ": " + std::to_string(s < counts.size() ? counts[s] : 0) + " particles";
+    if (s < diameters.size()) text += " of d = " + short_number(diameters[s]) + " m";
+  }
   return text;
 }
 
-herr_t print_attribute(hid_t location, const char* name, const H5A_info_t*, void* data) {
-  auto* state = static_cast<WalkState*>(data);
-  const hid_t attribute = H5Aopen(location, name, H5P_DEFAULT);
-  if (attribute < 0) return 0;
-  *state->out << "    @" << name << " = " << attribute_text(attribute) << "\n";
-  H5Aclose(attribute);
-  return 0;
+/// summary.json beside the file, or null.
+Json read_summary(const std::string& path) {
+  const fs::path summary = fs::path(path).parent_path() / "summary.json";
+  std::ifstream in(summary);
+  if (!in) return Json();
+  try {
+    return Json::parse(in);
+  } catch (const Json::exception&) {
+    return Json();
+  }
 }
 
-herr_t visit(hid_t root, const char* name, const H5O_info_t* info, void* data) {
-  auto* state = static_cast<WalkState*>(data);
-  std::ostream& out = *state->out;
-  const std::string path = name;
-  if (path == ".") return 0;
-  // Snapshots: list the first one in full, then only count them and their times.
-  if (path.rfind("snapshots/", 0) == 0) {
-    const std::string rest = path.substr(10);
-    const std::string group = rest.substr(0, rest.find('/'));
-    if (rest.find('/') == std::string::npos && info->type == H5O_TYPE_GROUP) {
-      const hid_t g = H5Gopen2(root, name, H5P_DEFAULT);
-      const double t = g >= 0 ? time_attribute(g) : NAN;
-      if (g >= 0) H5Gclose(g);
-      if (state->snapshots++ == 0) {
-        state->first_snapshot = group;
-        state->first_time = t;
-      }
-      state->last_time = t;
-    }
-    if (group != state->first_snapshot) return 0;
-  }
-  if (info->type == H5O_TYPE_GROUP) {
-    ++state->groups;
-    out << "  /" << name << "/\n";
-    const hid_t group = H5Gopen2(root, name, H5P_DEFAULT);
-    if (group >= 0) {
-      hsize_t index = 0;
-      H5Aiterate2(group, H5_INDEX_NAME, H5_ITER_INC, &index, print_attribute, data);
-      H5Gclose(group);
-    }
-  } else if (info->type == H5O_TYPE_DATASET) {
-    ++state->datasets;
-    const hid_t dataset = H5Dopen2(root, name, H5P_DEFAULT);
-    if (dataset < 0) return 0;
-    const hid_t space = H5Dget_space(dataset);
-    const int rank = H5Sget_simple_extent_ndims(space);
-    std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
-    if (rank > 0) H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    out << "  /" << name << "  ";
-    if (rank == 0) out << "scalar";
-    for (int k = 0; k < rank; ++k) out << (k ? " x " : "") << dims[static_cast<std::size_t>(k)];
+/// The number at `key` of a JSON object, NaN when absent or not a number.
+double number_at(const Json& object, const char* key) {
+  return object.is_object() && object.contains(key) && object[key].is_number() ? object[key].get<double>() : NAN;
+}
+
+/// The headline numbers of summary.json.
+void print_summary(const Json& summary, std::ostream& out) {
+  out << "status (summary.json): " << summary.value("status", std::string("?"));
+  const std::string message = summary.value("message", std::string());
+  if (!message.empty()) out << ": " << message;
+  out << "\n";
+  out << "  simulated t = " << short_number(number_at(summary, "start_time")) << " to "
+      << short_number(number_at(summary, "end_time")) << " s in " << short_number(number_at(summary, "wall_seconds"))
+      << " s of wall time; " << short_number(number_at(summary, "events_total")) << " events, "
+      << short_number(number_at(summary, "collisions_total")) << " collisions ("
+      << short_number(number_at(summary, "collisions_per_second")) << " per wall second)\n";
+  if (summary.contains("collision_rate_per_particle") && summary["collision_rate_per_particle"].is_object()) {
+    out << "  collision rate per particle (1/s):";
+    for (const auto& [pair, rate] : summary["collision_rate_per_particle"].items())
+      out << " " << pair << " " << (rate.is_number() ? short_number(rate.get<double>()) : std::string("n/a"));
     out << "\n";
-    hsize_t index = 0;
-    H5Aiterate2(dataset, H5_INDEX_NAME, H5_ITER_INC, &index, print_attribute, data);
-    H5Sclose(space);
-    H5Dclose(dataset);
   }
-  return 0;
+  if (!summary.contains("analysis") || !summary["analysis"].is_object()) return;
+  const Json& analysis = summary["analysis"];
+  if (analysis.contains("mixing")) {
+    const Json& m = analysis["mixing"];
+    out << "  mixing of " << m.value("species", std::string("?")) << ": Lacey index "
+        << short_number(number_at(m, "lacey_start")) << " -> " << short_number(number_at(m, "lacey_end"))
+        << ", rate k = " << short_number(number_at(m, "rate")) << " 1/s\n";
+  }
+  if (analysis.contains("segregation_index")) {
+    const Json& s = analysis["segregation_index"];
+    out << "  segregation index " << short_number(number_at(s, "start")) << " -> " << short_number(number_at(s, "end"))
+        << "\n";
+  }
+}
+
+void print_run(const h5::File& file, const std::string& path, std::ostream& out) {
+  const h5::Group species = file.open_group("species");
+  const std::vector<std::string> names = species.read_strings("name");
+  out << "species: "
+      << species_text(names, species.read<double>("diameter"), species.read<std::uint64_t>("count")) << "\n";
+  const h5::Group snapshots = file.open_group("snapshots");
+  const std::vector<std::string> children = snapshots.children();
+  out << "snapshots: " << children.size();
+  if (!children.empty())
+    out << ", t = " << short_number(snapshots.open_group(children.front()).attribute<double>("time")) << " to "
+        << short_number(snapshots.open_group(children.back()).attribute<double>("time")) << " s";
+  out << "\n";
+  const h5::Group series = file.open_group("timeseries");
+  const std::vector<double> times = series.read<double>("time");
+  out << "time series: " << times.size() << " rows";
+  if (!times.empty()) out << ", t = " << short_number(times.front()) << " to " << short_number(times.back()) << " s";
+  out << " (" << series.children().size() << " series)\n";
+  if (!times.empty()) {
+    const std::vector<double> total = series.read<double>("total_energy");
+    const std::vector<double> dissipated = series.read<double>("dissipated");
+    if (!total.empty() && !dissipated.empty())
+      out << "  at the last row: total energy " << short_number(total.back()) << " J, dissipated "
+          << short_number(dissipated.back()) << " J\n";
+  }
+  if (file.contains("gas")) {
+    const h5::Group gas = file.open_group("gas");
+    const std::vector<std::int32_t> cells = gas.read<std::int32_t>("cells", {3});
+    out << "gas: " << cells[0] << " x " << cells[1] << " x " << cells[2] << " cells, closure "
+        << gas.read_string("closure") << "\n";
+  }
+  const Json summary = read_summary(path);
+  if (summary.is_object())
+    print_summary(summary, out);
+  else
+    out << "status: no summary.json beside the file (the run is still going, or was killed)\n";
+}
+
+void print_checkpoint(const h5::File& file, std::ostream& out) {
+  const h5::Group state = file.open_group("state");
+  out << "state of method " << text_attribute(state, "method") << " at t = " << short_number(state.attribute<double>("time"))
+      << " s";
+  if (state.contains("particles")) {
+    const std::vector<std::uint32_t> species = state.open_group("particles").read<std::uint32_t>("species");
+    std::map<std::uint32_t, std::size_t> count;
+    for (std::uint32_t s : species) ++count[s];
+    out << ", " << species.size() << " particles (by species index:";
+    for (const auto& [s, n] : count) out << " " << s << ": " << n;
+    out << ")";
+  }
+  out << (file.contains("gas") ? "; with the gas's state" : "") << "\n";
+  out << "continue it with: carom resume " << "DIR (the directory that holds it)\n";
+}
+
+void print_sweep(const h5::File& file, std::ostream& out) {
+  out << "sweep file " << text_attribute(file, "sweep_file") << " over scene " << text_attribute(file, "scene") << "\n";
+  if (!file.contains("cases")) return;
+  const std::vector<std::string> status = file.open_group("cases").read_strings("status");
+  std::map<std::string, std::size_t> tally;
+  for (const std::string& s : status) ++tally[s];
+  out << status.size() << " cases:";
+  for (const auto& [s, n] : tally) out << " " << n << " " << s << ";";
+  out << "\n";
 }
 
 }  // namespace
 
-void print_file_info(const std::string& path, std::ostream& out) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such file");
+void require_hdf5_file(const std::string& path) {
+  std::error_code error;
+  if (!fs::exists(path, error)) throw SceneError(path + ": no such file");
+  if (fs::is_directory(path, error))
+    throw SceneError(path + ": is a directory; carom info reads one file (e.g. " + (fs::path(path) / "run.h5").string() +
+                     ")");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error(path + ": not an HDF5 file");
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(path + ": cannot open the HDF5 file");
-  WalkState state;
-  state.out = &out;
-  out << path << " (" << std::filesystem::file_size(path) << " bytes)\n";
-  hsize_t index = 0;
-  H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &index, print_attribute, &state);
-  const herr_t status = H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, visit, &state, H5O_INFO_BASIC);
-  H5Fclose(file);
-  if (status < 0) throw std::runtime_error(path + ": cannot read the file's structure");
-  if (state.snapshots > 1)
-    out << "  (" << state.snapshots - 1 << " more snapshots like /snapshots/" << state.first_snapshot << ")\n";
-  if (state.snapshots > 0)
-    out << state.snapshots << " snapshots from t = " << state.first_time << " s to t = " << state.last_time << " s\n";
-  out << state.groups << " groups, " << state.datasets << " datasets\n";
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    throw SceneError(path + ": not an HDF5 file (carom info reads a run.h5, checkpoint.h5 or a sweep's summary.h5)");
+}
+
+void print_file_info(const std::string& path, std::ostream& out) {
+  require_hdf5_file(path);
+  const h5::File file = h5::File::open(path, false);
+  const std::string kind = text_attribute(file, "kind");
+  const bool sweep = kind.empty() && file.has_attribute("sweep_file");
+  if (kind != "carom run" && kind != "carom checkpoint" && !sweep)
+    throw SceneError(path + ": an HDF5 file, but not a carom run file, checkpoint or sweep summary (root attribute "
+                     "'kind' is " + (kind.empty() ? std::string("missing") : "\"" + kind + "\"") +
+                     "); `carom info --tree " + path + "` lists what it holds");
+  out << path << ": " << (sweep ? std::string("carom sweep summary") : kind + " file") << ", "
+      << byte_text(static_cast<double>(fs::file_size(path))) << "\n";
+  if (!sweep)
+    out << "scene \"" << text_attribute(file, "scene_name") << "\", carom " << text_attribute(file, "carom_version")
+        << ", seed " << (file.has_attribute("seed") ? std::to_string(file.attribute<std::uint64_t>("seed")) : "?")
+        << "\n";
+  if (sweep)
+    print_sweep(file, out);
+  else if (kind == "carom run")
+    print_run(file, path, out);
+  else
+    print_checkpoint(file, out);
+  out << "(carom info --tree " << path << " lists every group and dataset)\n";
 }
 
 }  // namespace carom

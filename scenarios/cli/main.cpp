@@ -3,7 +3,7 @@
 //   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--quiet] [--overwrite]
 //   carom resume DIR [--end T] [--quiet]
 //   carom check SCENE [--set key=value ...] [--seed N]
-//   carom info FILE.h5
+//   carom info FILE.h5 [--tree]
 //   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
 //
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
@@ -16,7 +16,9 @@
 #include "scenarios/cli/check.hpp"
 #include "scenarios/cli/info.hpp"
 #include "scenarios/run/run.hpp"
+#include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "scenarios/scene/settling.hpp"
 #include "scenarios/sweep/sweep.hpp"
 
 using namespace carom;
@@ -35,7 +37,7 @@ int main(int argc, char** argv) {
 
   std::string scene_path, out_dir, resume_dir, info_path;
   std::vector<std::string> overrides;
-  std::uint64_t seed = 0;
+  std::string seed_text;  // checked by parse_seed: CLI11 would wrap "-1" into 2^64 - 1
   bool quiet = false, overwrite = false;
   double end_time = 0;
 
@@ -44,7 +46,7 @@ int main(int argc, char** argv) {
   run->add_option("--set", overrides, "change a scene value before validation, e.g. --set collisions.default.e=0.9")
       ->type_name("KEY=VALUE");
   CLI::Option* out_option = run->add_option("--out", out_dir, "output directory (default: SCENE's name + .out)");
-  CLI::Option* seed_option = run->add_option("--seed", seed, "random seed (replaces initial.seed)");
+  CLI::Option* seed_option = run->add_option("--seed", seed_text, "random seed, an integer >= 0 (replaces initial.seed)");
   run->add_flag("--quiet", quiet, "no progress line and no messages but errors");
   run->add_flag("--overwrite", overwrite, "replace the outputs of an earlier run in DIR");
 
@@ -56,10 +58,12 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "validate a scene and print what it will model; writes nothing");
   check->add_option("scene", scene_path, "scene file")->required();
   check->add_option("--set", overrides, "change a scene value before validation")->type_name("KEY=VALUE");
-  CLI::Option* check_seed = check->add_option("--seed", seed, "random seed");
+  CLI::Option* check_seed = check->add_option("--seed", seed_text, "random seed, an integer >= 0");
 
   CLI::App* info = app.add_subcommand("info", "describe a run file or checkpoint");
-  info->add_option("file", info_path, "HDF5 file (run.h5 or checkpoint.h5)")->required();
+  info->add_option("file", info_path, "HDF5 file (run.h5, checkpoint.h5 or a sweep's summary.h5)")->required();
+  bool tree = false;
+  info->add_flag("--tree", tree, "list every group and dataset of the file (the raw HDF5 tree)");
 
   SweepOptions sweep_options;
   std::string sweep_out;
@@ -90,10 +94,12 @@ int main(int argc, char** argv) {
   try {
     if (*run || *check) {
       std::optional<std::uint64_t> chosen_seed;
-      if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = seed;
+      if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = parse_seed(seed_text);
       Scene scene = load_scene(scene_path, overrides, chosen_seed);
       if (*check) {
-        build_initial_state(scene);
+        install_stop_handlers();
+        build_initial_state(scene, stop_flag());
+        if (*stop_flag()) throw InterruptedBeforeStart("interrupted while the particles were placed: nothing checked");
         try {
           make_method(scene.system, scene.method);  // the checks a run makes at its start
         } catch (const std::invalid_argument& e) {
@@ -114,10 +120,15 @@ int main(int argc, char** argv) {
       return resume_run(resume_dir, end, quiet);
     }
     if (*info) {
-      if (!std::filesystem::exists(info_path)) throw SceneError(info_path + ": no such file");
-      print_file_info(info_path, std::cout);
+      if (tree)
+        print_file_tree(info_path, std::cout);
+      else
+        print_file_info(info_path, std::cout);
       return kExitOk;
     }
+  } catch (const InterruptedBeforeStart& e) {
+    std::cerr << "carom: " << e.what() << "\n";
+    return kExitInterrupted;
   } catch (const SceneError& e) {
     std::cerr << "carom: error: " << e.what() << "\n";
     return kExitUsage;

@@ -1,7 +1,8 @@
 """Figures of a run's analysis (scene [analysis]; run_analysis.hpp), used by plot.py.
 
   RUN_mixing.png   (runs with [analysis.mixing]) the Lacey index against time with the fitted
-                   M = 1 - exp(-k t) and the time to M = 0.8; the axial mean squared
+                   M = 1 - (1 - M0) exp(-k t) (M0 the measured start) and the time to
+                   M = 0.8; the axial mean squared
                    displacement with the confined-bed fit and its saturation; and side
                    views of the bed at t = 0 and at the last snapshot with the tagged (lower
                    half) and untagged beads in two colours;
@@ -90,10 +91,11 @@ def plot_mixing(run, run_path, path, dpi):
     ax = fig.add_subplot(grid[0])
     ax.plot(t, lacey, "o", ms=3, color="0.2", label="Lacey index")
     k = mixing.get("rate")
+    m0 = mixing.get("fit_start") or 0.0  # the measured M(0) the fit starts from
     if k:
         tt = np.linspace(0, t.max(), 200)
-        ax.plot(tt, 1 - np.exp(-k * tt), color="C3",
-                label=f"$1 - e^{{-kt}}$, $k$ = {k:.3g} 1/s")
+        ax.plot(tt, 1 - (1 - m0) * np.exp(-k * tt), color="C3",
+                label=f"$1 - (1 - M_0)e^{{-kt}}$: $M_0$ = {m0:.2f}, $k$ = {k:.3g}/s")
     ax.axhline(0.8, color="0.6", ls=":", lw=1)
     t08 = mixing.get("time_to_m08_fit")
     if t08 and t08 < 1.5 * t.max():

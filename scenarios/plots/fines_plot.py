@@ -6,7 +6,8 @@
 Reads OUT/summary.h5 (carom sweep) and writes OUT/fines_sweep.png, three panels against the
 fines mass fraction, one line per fines diameter, each point the mean over seeds with the
 standard deviation over seeds as error bars:
-  (a) the large beads' mixing rate k (fit of the Lacey index, M = 1 - exp(-k t));
+  (a) the large beads' mixing rate k (fit of the Lacey index, M = 1 - (1 - M0) exp(-k t) from
+      the measured start M0);
   (b) the two candidate mechanisms: the vertical interstitial gas velocity the large beads see
       (fines take pore volume), and the collision impulse per second a large bead receives from
       fines, per its weight;
@@ -73,13 +74,13 @@ def main(argv=None):
         n_completed = h5["groups/n_completed"][()]
         fig, axes = plt.subplots(1, 4, figsize=(15, 3.8), gridspec_kw={"width_ratios": [1, 1, 1, 1.4]})
         line(axes[0], h5, "analysis.mixing.rate", ylabel="mixing rate $k$ of the large beads (1/s)")
-        axes[0].set_title("(a) mixing: $M = 1 - e^{-kt}$", fontsize=10)
+        axes[0].set_title("(a) mixing: $M = 1 - (1 - M_0)\,e^{-kt}$", fontsize=10)
         axes[0].legend()
         line(axes[1], h5, "analysis.mechanism.gas_velocity_seen_large",
              ylabel="gas velocity at the large beads (m/s)")
         axes[1].set_title("(b1) interstitial gas (pore volume)", fontsize=10)
         line(axes[2], h5, "analysis.mechanism.impulse_per_weight_large-fines",
-             ylabel="impulse rate from fines / weight")
+             ylabel="impulse rate from fines / weight (-)")
         axes[2].set_title("(b2) collisions with fines", fontsize=10)
 
         ax = axes[3]

@@ -271,10 +271,14 @@ def plot_gas(run, path):
     left.set_xlabel("$t$ (s)")
     left.set_ylabel(r"$\Delta p$ (Pa)")
     twin = left.twinx()
-    twin.plot(t, inlet, color=COLOURS[1], lw=1.0)
+    twin.plot(t, inlet, color=COLOURS[1], lw=1.0, label="inlet velocity $U$")
     twin.set_ylabel("inlet velocity $U$ (m/s)", color=COLOURS[1])
     twin.spines["right"].set_visible(True)
-    left.legend(loc="upper left", fontsize="small")
+    # The legends sit below the axes: inside, wherever they go, some run's curve runs under them.
+    lines = left.get_legend_handles_labels()
+    twin_lines = twin.get_legend_handles_labels()
+    left.legend(lines[0] + twin_lines[0], lines[1] + twin_lines[1], loc="upper center",
+                bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize="small", frameon=False)
     right.plot(inlet, drop, ".", ms=2, color=COLOURS[0], label="carom")
     right.axhline(weight, color="0.3", ls="--", lw=0.8)
     measured = measured_minimum_fluidization(inlet, drop, weight)
@@ -287,12 +291,12 @@ def plot_gas(run, path):
                             f"{attrs['closure_minimum_fluidization']:.3f} m/s")
         right.axvline(attrs["wen_yu_minimum_fluidization"], color=COLOURS[3], ls="-.", lw=1.0,
                       label=f"Wen-Yu: {attrs['wen_yu_minimum_fluidization']:.3f} m/s")
-    right.legend(loc="lower right", fontsize=7)
+    right.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=7, frameon=False)
     right.set_xlabel("inlet superficial velocity $U$ (m/s)")
     right.set_ylabel(r"$\Delta p$ (Pa)")
     right.set_title(f"closure: {text(run['gas/closure'][()])}", fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, dpi=DPI)
+    fig.savefig(path, dpi=DPI, bbox_inches="tight")
     plt.close(fig)
 
 

@@ -10,10 +10,12 @@
 #include <unistd.h>
 
 #include "scenarios/run/gas_run.hpp"
+#include "scenarios/run/output_estimate.hpp"
 #include "scenarios/run/progress.hpp"
 #include "scenarios/analysis/run_analysis.hpp"
 #include "scenarios/run/run_output.hpp"
 #include "scenarios/run/summary.hpp"
+#include "scenarios/scene/settling.hpp"
 
 namespace carom {
 
@@ -181,9 +183,23 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
   return kExitOk;
 }
 
-/// Creates the output directory, refusing to mix a new run with an earlier one's files.
+/// Creates the output directory, refusing to mix a new run with an earlier one's files. Those
+/// are carom's own file names only: its outputs, and the figures scenarios/plots/plot.py draws
+/// beside run.h5 (RUN_NAME.png; a test checks this list against plot.py). --overwrite removes
+/// them; anything else in the directory is left alone.
 void prepare_output_directory(const fs::path& dir, bool overwrite) {
-  const char* outputs[] = {"run.h5", "run.xmf", "checkpoint.h5", "summary.json", "report.md"};
+  const char* outputs[] = {"run.h5",
+                           "run.xmf",
+                           "checkpoint.h5",
+                           "summary.json",
+                           "report.md",
+                           "run_energies.png",
+                           "run_collision_rates.png",
+                           "run_snapshot.png",
+                           "run_gas.png",
+                           "run_gas_field.png",
+                           "run_mixing.png",
+                           "run_collisions.png"};
   std::error_code error;
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");
@@ -210,9 +226,17 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+const volatile std::sig_atomic_t* stop_flag() { return &g_stop; }
+
 int run_scene(Scene scene, const RunOptions& options) {
-  // Everything that can be wrong with a scene is found before the first file is created.
-  build_initial_state(scene);
+  // Everything that can be wrong with a scene is found before the first file is created. A
+  // signal meanwhile (placing, settling) stops it with nothing written.
+  install_stop_handlers();
+  check_output_size(scene, estimate_output(scene, planned_particle_count(scene)), options.out_dir);
+  build_initial_state(scene, stop_flag());
+  if (g_stop)
+    throw InterruptedBeforeStart("interrupted while the particles were placed, before the run's t = 0: nothing "
+                                 "was written; run the same command again to start over");
   std::unique_ptr<CollisionMethod> sim;
   try {
     sim = make_method(scene.system, scene.method);

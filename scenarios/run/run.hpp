@@ -7,12 +7,15 @@
 ///   1    runtime failure: inelastic collapse, an output that cannot be written, a bad checkpoint
 ///   2    bad scene or bad usage: nothing was run and nothing was written
 ///   130  interrupted by SIGINT or SIGTERM: a checkpoint was written, `carom resume DIR` continues.
+///        A signal before t = 0 (while the particles are placed or settled) writes nothing: the
+///        run had not started (InterruptedBeforeStart, with a message that says so).
 ///        The signal is acted on between chunks of run_until (about 0.2 s of wall time); a second
 ///        signal exits at once with 130 and no new checkpoint (the last periodic one remains).
 ///
 /// An output directory holds run.h5 (+ run.xmf), checkpoint.h5 and summary.json. Outputs are
 /// written at k * interval (k = 0, 1, ...) of simulated time and at the end, so a resumed run
 /// writes exactly what the uninterrupted one would have (plus the extra end-of-stretch rows).
+#include <csignal>
 #include <optional>
 #include <string>
 
@@ -38,5 +41,7 @@ int resume_run(const std::string& dir, std::optional<double> end_time, bool quie
 
 /// Installs the SIGINT/SIGTERM handlers that ask the run loop to stop at the next chunk.
 void install_stop_handlers();
+/// The flag those handlers raise (for a settling run before t = 0, build_initial_state).
+const volatile std::sig_atomic_t* stop_flag();
 
 }  // namespace carom

@@ -2,6 +2,7 @@
 // then velocities; then, optionally, a settling run.
 #include <cmath>
 
+#include "scenarios/scene/fill_capacity.hpp"
 #include "scenarios/scene/initial_file.hpp"
 #include "scenarios/scene/placement.hpp"
 #include "scenarios/scene/scene.hpp"
@@ -74,10 +75,11 @@ std::string with_sources(const std::string& message, const Scene& scene, std::si
 }
 }  // namespace
 
-void build_initial_state(Scene& scene) {
+void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
   System& system = scene.system;
   system.particles = ParticleStore{};
   const std::vector<std::size_t> counts = fill_counts(scene);
+  check_fill_capacities(scene, counts);  // before anything is allocated for them
   std::vector<double> radii;
   for (const ListedParticle& p : scene.listed) radii.push_back(system.species[p.species].radius());
   std::vector<FileParticle> from_file;
@@ -136,7 +138,7 @@ void build_initial_state(Scene& scene) {
     throw SceneError(scene.file + ": initial state: " + with_sources(e.what(), scene, first_from_file, from_file.size()));
   }
   if (scene.settle_time <= 0.0) return;
-  settle(scene);
+  settle(scene, stop);
   try {
     validate_initial_state(system, run_tolerance);
   } catch (const std::invalid_argument& e) {  // an engine invariant broken: report it plainly

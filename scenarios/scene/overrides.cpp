@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <limits>
 #include <vector>
 
 #include "scenarios/scene/scene_reader.hpp"
@@ -27,11 +28,12 @@ std::vector<std::string> split_path(std::string_view key) {
   return parts;
 }
 
-/// The value as a TOML node (a string when it is not valid TOML).
-toml::table parse_value(std::string_view text) {
+/// The value as a TOML node (a string when it is not valid TOML); `source`: the path its nodes
+/// carry.
+toml::table parse_value(std::string_view text, const std::string& source) {
   try {
     const std::string document = "value = " + std::string(text);
-    toml::table holder = toml::parse(std::string_view(document), std::string_view("--set"));
+    toml::table holder = toml::parse(std::string_view(document), std::string_view(source));
     return holder;
   } catch (const toml::parse_error&) {
     toml::table holder;
@@ -44,8 +46,8 @@ toml::table parse_value(std::string_view text) {
 toml::table* as_table_step(toml::node* n) { return n ? n->as_table() : nullptr; }
 }  // namespace
 
-void apply_override(toml::table& scene, std::string_view assignment) {
-  const std::string quoted = "--set " + std::string(assignment);
+void apply_override(toml::table& scene, std::string_view assignment, const std::string& origin) {
+  const std::string quoted = origin.empty() ? "--set " + std::string(assignment) : origin + ": " + std::string(assignment);
   const std::size_t equals = assignment.find('=');
   if (equals == std::string_view::npos)
     throw SceneError(quoted + ": expected key=value (e.g. --set collisions.default.e=0.9)");
@@ -97,14 +99,32 @@ void apply_override(toml::table& scene, std::string_view assignment) {
     if (k + 1 >= parts.size()) throw SceneError(quoted + ": the key ends at a table, not a value");
     table = chosen;
   }
-  toml::table holder = parse_value(value);
+  toml::table holder = parse_value(value, origin.empty() ? std::string("--set") : origin);
   toml::node* parsed = holder.get("value");
-  // A fresh copy carries no source position: messages then say "set on the command line".
   parsed->visit([&](auto& v) {
     using V = std::remove_cvref_t<decltype(v)>;
-    V copy(v);
-    table->insert_or_assign(parts.back(), std::move(copy));
+    if (origin.empty()) {
+      // A fresh copy carries no source position: messages then say "set on the command line".
+      V copy(v);
+      table->insert_or_assign(parts.back(), std::move(copy));
+    } else {
+      // Moved, the value keeps its source (path = origin), which messages then name.
+      table->insert_or_assign(parts.back(), std::move(v));
+    }
   });
+}
+
+std::uint64_t parse_seed(std::string_view text) {
+  constexpr auto largest = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+  const std::string_view digits = trim(text);
+  std::uint64_t seed = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), seed);
+  const bool whole = !digits.empty() && std::isdigit(static_cast<unsigned char>(digits.front())) &&
+                     error == std::errc() && end == digits.data() + digits.size();
+  if (!whole || seed > largest)
+    throw SceneError("--seed " + std::string(text) + ": a seed must be a non-negative integer, in [0, " +
+                     std::to_string(largest) + "] (initial.seed)");
+  return seed;
 }
 
 }  // namespace carom

@@ -14,7 +14,11 @@ Placer::Placer(System& system, std::vector<double> radii)
 
 void Placer::centre_range(int k, double a, const Vec3& lower, const Vec3& upper, double& lo, double& hi,
                           bool& wraps) const {
-  const Domain& d = system_.domain;
+  carom::centre_range(system_.domain, k, a, lower, upper, lo, hi, wraps);
+}
+
+void centre_range(const Domain& d, int k, double a, const Vec3& lower, const Vec3& upper, double& lo, double& hi,
+                  bool& wraps) {
   wraps = d.periodic[k] && lower[k] <= d.lower[k] && upper[k] >= d.upper[k];
   if (wraps) {
     lo = d.lower[k];
@@ -101,32 +105,42 @@ AxisSites axis_sites(double lo, double hi, bool wraps, double h, bool even) {
 }
 }  // namespace
 
-std::size_t Placer::lattice(std::uint32_t s, std::size_t count, const Vec3& lower, const Vec3& upper, bool fcc) {
-  if (count == 0) return 0;
-  const double a = system_.species.at(s).radius();
+LatticePlan plan_lattice(const Domain& domain, double a, std::size_t count, const Vec3& lower, const Vec3& upper,
+                         bool fcc) {
+  LatticePlan plan;
   double lo[3], hi[3];
   bool wraps[3];
   double volume = 1.0;
   for (int k = 0; k < 3; ++k) {
-    centre_range(k, a, lower, upper, lo[k], hi[k], wraps[k]);
-    if (hi[k] < lo[k]) return 0;
+    centre_range(domain, k, a, lower, upper, lo[k], hi[k], wraps[k]);
+    if (hi[k] < lo[k]) return plan;
     volume *= std::max(hi[k] - lo[k], 2.0 * a);
   }
-  // h: spacing of the cubic grid of candidate sites (fcc keeps those with an even index sum,
-  // nearest neighbours at h sqrt(2)). Start at the spacing that spreads `count` over the region
-  // and shrink until the region holds enough sites, but never below contact.
+  // Nearest neighbours of the fcc sites are at h sqrt(2).
   const double h_min = fcc ? std::sqrt(2.0) * a * (1.0 + 1e-12) : 2.0 * a * (1.0 + 1e-12);
-  double h = std::max(h_min, std::cbrt(volume / (fcc ? 2.0 * count : 1.0 * count)));
-  AxisSites axes[3];
+  double h = std::max(h_min, std::cbrt(volume / (fcc ? 2.0 * static_cast<double>(count) : 1.0 * static_cast<double>(count))));
   for (;;) {
     double sites = 1.0;
-    for (int k = 0; k < 3; ++k) {
-      axes[k] = axis_sites(lo[k], hi[k], wraps[k], h, fcc);
-      sites *= static_cast<double>(axes[k].count);
-    }
+    for (int k = 0; k < 3; ++k) sites *= static_cast<double>(axis_sites(lo[k], hi[k], wraps[k], h, fcc).count);
     if (fcc) sites = std::floor(sites / 2.0);
-    if (sites >= static_cast<double>(count) || h <= h_min) break;
+    plan.spacing = h;
+    plan.sites = static_cast<std::size_t>(std::min(sites, 1e18));
+    if (sites >= static_cast<double>(count) || h <= h_min) return plan;
     h = std::max(h_min, 0.98 * h);
+  }
+}
+
+std::size_t Placer::lattice(std::uint32_t s, std::size_t count, const Vec3& lower, const Vec3& upper, bool fcc) {
+  if (count == 0) return 0;
+  const double a = system_.species.at(s).radius();
+  const LatticePlan plan = plan_lattice(system_.domain, a, count, lower, upper, fcc);
+  if (plan.sites == 0) return 0;
+  double lo[3], hi[3];
+  bool wraps[3];
+  AxisSites axes[3];
+  for (int k = 0; k < 3; ++k) {
+    centre_range(k, a, lower, upper, lo[k], hi[k], wraps[k]);
+    axes[k] = axis_sites(lo[k], hi[k], wraps[k], plan.spacing, fcc);
   }
   std::vector<Vec3> sites;
   for (long z = 0; z < axes[2].count; ++z)

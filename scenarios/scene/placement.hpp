@@ -52,6 +52,24 @@ class Placer {
   HierarchicalGrid grid_;
 };
 
+/// The centre range [lo, hi] on axis k for a sphere of radius a in [lower, upper] of `domain`;
+/// `wraps` is set when the axis is periodic and the region spans it, so that centres run over
+/// [lower, upper).
+void centre_range(const Domain& domain, int k, double a, const Vec3& lower, const Vec3& upper, double& lo,
+                  double& hi, bool& wraps);
+
+/// The lattice a fill of `count` spheres of radius a in [lower, upper] uses: the spacing h (m) of
+/// the cubic grid of candidate sites (fcc keeps those with an even index sum) and how many sites
+/// it has there (before any is skipped for overlapping placed particles or walls). h starts at
+/// the spacing that spreads `count` over the region and shrinks until the region holds `count`
+/// sites, but never below contact: `sites` < count then means the lattice cannot hold them.
+struct LatticePlan {
+  double spacing = 0;     ///< h, m.
+  std::size_t sites = 0;  ///< Sites at that spacing.
+};
+LatticePlan plan_lattice(const Domain& domain, double a, std::size_t count, const Vec3& lower, const Vec3& upper,
+                         bool fcc);
+
 /// Maxwellian velocities for particles [first, end): component standard deviation sqrt(T / m_i)
 /// (equipartition at temperature T, J), or v_rms / sqrt(3) for every particle when v_rms > 0.
 /// Their total momentum is then removed and their kinetic energy scaled to the exact target:

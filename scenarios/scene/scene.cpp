@@ -63,7 +63,7 @@ void read_meta(TableReader& root, Scene& scene, const std::string& fallback_name
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides,
-                  std::optional<std::uint64_t> seed) {
+                  std::optional<std::uint64_t> seed, const std::vector<std::string>& override_origins) {
   toml::table table;
   try {
     table = toml::parse(std::string_view(text), std::string_view(file));
@@ -71,7 +71,13 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
     throw SceneError(file + ":" + std::to_string(e.source().begin.line) + ":" +
                      std::to_string(e.source().begin.column) + ": not valid TOML: " + std::string(e.description()));
   }
-  for (const std::string& assignment : overrides) apply_override(table, assignment);
+  // A sweep file given where a scene belongs (carom check/run fines_sweep.toml): say what to run.
+  if (const toml::node* sweep = table.get("sweep"); sweep != nullptr && sweep->is_table())
+    throw SceneError(file + ":" + std::to_string(sweep->source().begin.line) +
+                     ": this is a sweep file ([sweep]), not a scene: run it with `carom sweep " + file +
+                     "`, or check every case with `carom sweep " + file + " --dry-run`");
+  for (std::size_t k = 0; k < overrides.size(); ++k)
+    apply_override(table, overrides[k], k < override_origins.size() ? override_origins[k] : std::string());
   if (seed) apply_override(table, "initial.seed=" + std::to_string(*seed));
 
   Scene scene;
@@ -109,12 +115,17 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   return scene;
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, std::optional<std::uint64_t> seed) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, std::optional<std::uint64_t> seed,
+                 const std::vector<std::string>& override_origins) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw SceneError(path + ": is a directory, not a scene file (give the .toml file itself, e.g. " +
+                     (std::filesystem::path(path) / "scene.toml").string() + ")");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open the scene file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), path, overrides, seed);
+  return parse_scene(text.str(), path, overrides, seed, override_origins);
 }
 
 }  // namespace carom

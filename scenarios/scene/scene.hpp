@@ -8,6 +8,7 @@
 /// Both throw SceneError with a message naming the file, line, key, value and allowed range.
 /// SCENES.md documents every key.
 #include <array>
+#include <csignal>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,6 +38,9 @@ struct Fill {
   std::size_t region = 0;         ///< Index into Scene::regions.
   Arrangement arrangement = Arrangement::Random;
   std::string where;              ///< "file:line" of the fill, for messages.
+  std::string amount_key;         ///< Dotted key of the amount ("species[0].fill.count"), for messages.
+  std::string amount_where;       ///< "file:line" of the amount's value.
+  std::string amount_text;        ///< The amount as written ("100000000").
 };
 
 /// A particle written out in the scene.
@@ -59,9 +63,13 @@ struct InitialFile {
 
 /// When outputs are written (s of simulated time); 0 means never (except at the end).
 struct OutputSchedule {
-  double snapshot_every = 0;
-  double sample_every = 0;
-  double checkpoint_every = 0;
+  double snapshot_every = 0;    ///< s between particle snapshots.
+  double sample_every = 0;      ///< s between time-series rows.
+  double checkpoint_every = 0;  ///< s between checkpoints.
+  /// Largest estimated output a run may write, bytes (output.max_bytes; run/output_estimate.hpp).
+  double max_bytes = 1e10;
+  bool max_bytes_given = false;  ///< output.max_bytes set in the scene: also lifts the free-space check.
+  std::string max_bytes_where;   ///< "file:line" of output.max_bytes (of [output] or the scene when absent).
 };
 
 /// [flight]: how particles move between events (DESIGN.md section 2).
@@ -114,19 +122,24 @@ std::uint32_t species_index(TableReader& t, std::string_view key, const Scene& s
 std::size_t region_index(TableReader& t, std::string_view key, const Scene& scene);
 
 /// Parses and validates a scene text. `overrides` are "key=value" assignments applied to the
-/// table first; `seed`, when given, replaces initial.seed. Throws SceneError.
+/// table first; `seed`, when given, replaces initial.seed. `override_origins[k]`, when given and
+/// not empty, says where override k was written ("sweep.toml:12"): messages about its value name
+/// that place instead of "(set on the command line)". Throws SceneError (also for a sweep file).
 Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides = {},
-                  std::optional<std::uint64_t> seed = std::nullopt);
-/// Reads the file and parses it (a missing or unreadable file is a SceneError too).
+                  std::optional<std::uint64_t> seed = std::nullopt,
+                  const std::vector<std::string>& override_origins = {});
+/// Reads the file and parses it (a missing or unreadable file, or a directory, is a SceneError too).
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
-                 std::optional<std::uint64_t> seed = std::nullopt);
+                 std::optional<std::uint64_t> seed = std::nullopt,
+                 const std::vector<std::string>& override_origins = {});
 
 /// Places every particle (listed ones first, then those of initial.from_file, then the fills in
 /// species order), gives the filled ones their velocities, validates the result (no overlaps,
 /// nothing outside the walls) and, with initial.settle_time, runs the settling and takes its end
-/// state as the initial state at t = 0. Throws SceneError.
-void build_initial_state(Scene& scene);
+/// state as the initial state at t = 0. Throws SceneError; InterruptedBeforeStart (settling.hpp)
+/// when `stop` (a signal handler's flag, may be null) is raised while it settles.
+void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop = nullptr);
 
 /// Number of particles each fill will create (mass fractions resolved), per species.
 std::vector<std::size_t> fill_counts(const Scene& scene);

@@ -74,6 +74,8 @@ TableReader::TableReader(const toml::table& table, std::string file, std::string
 std::string TableReader::where(const toml::node& node) const {
   const auto line = node.source().begin.line;
   if (line == 0) return file_ + " (set on the command line)";
+  // A value set by a sweep file carries the place it was written (overrides.hpp).
+  if (const auto& path = node.source().path; path && *path != file_) return *path + " (for " + file_ + ")";
   return file_ + ":" + std::to_string(line);
 }
 

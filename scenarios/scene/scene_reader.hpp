@@ -61,7 +61,8 @@ class TableReader {
   const std::string& path() const { return path_; }
   /// Dotted path of a key in this table.
   std::string key_path(std::string_view key) const { return path_.empty() ? std::string(key) : path_ + "." + std::string(key); }
-  /// "file:line" of a node, or "file (set on the command line)" for values added by --set.
+  /// "file:line" of a node, "file (set on the command line)" for values added by --set, or
+  /// "sweep.toml:12 (for file)" for values a sweep file set (apply_override's origin).
   std::string where(const toml::node& node) const;
   /// "file:line" of this table.
   std::string where() const;

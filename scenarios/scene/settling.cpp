@@ -7,7 +7,7 @@
 
 namespace carom {
 
-void settle(Scene& scene) {
+void settle(Scene& scene, const volatile std::sig_atomic_t* stop) {
   System& system = scene.system;
   const std::string context = scene.settle_where + ": initial.settle_time = " + format_number(scene.settle_time);
   // Settling happens without the gas: ballistic flights, unless fixed particles sit under
@@ -22,8 +22,13 @@ void settle(Scene& scene) {
   if (any_fixed)
     sim.add_synchronising_action("settling_step", 0.0, std::max(scene.settle_time / 100.0, 1e-3),
                                  [](GlobalStep&) {});
+  sim.set_stop_flag(stop);
   try {
-    sim.run_until(scene.settle_time);
+    if (!sim.run_until(scene.settle_time))
+      throw InterruptedBeforeStart("interrupted while settling (" + context + " s, stopped at " +
+                                   format_number(sim.time()) +
+                                   " s of it), before the run's t = 0: nothing was written; run the same "
+                                   "command again to start over");
   } catch (const MethodFailure& e) {
     throw SceneError(context + ": the settling run failed: " + e.what());
   } catch (const InelasticCollapse& e) {

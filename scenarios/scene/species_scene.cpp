@@ -54,6 +54,13 @@ void read_fills(Scene& scene, std::vector<TableReader>& species_tables) {
       fill.value = f->number("mass_fraction", Range{0.0, 1.0, false, true, "this species' mass / mass of all solids (0: none, e.g. the reference case of a sweep)"});
       ++given;
     }
+    for (const char* key : {"count", "volume_fraction", "mass_fraction"})
+      if (f->has(key)) {
+        fill.amount_key = f->key_path(key);
+        fill.amount_where = f->where_key(key);
+        fill.amount_text = fill.amount == Fill::Amount::Count ? std::to_string(static_cast<std::int64_t>(fill.value))
+                                                              : format_number(fill.value);
+      }
     if (given != 1)
       f->fail_table("give exactly one of count, volume_fraction or mass_fraction (" + std::to_string(given) + " given)");
     const std::string arrangement = f->string("arrangement", "random", {"random", "fcc", "cubic"});

@@ -35,7 +35,7 @@ std::string describe_case(const SweepSpec& spec, const SweepCase& c) {
 
 /// Placement and the checks a run makes at its start (`carom check`). Throws SceneError.
 void check_case(const SweepSpec& spec, const SweepCase& c) {
-  Scene scene = load_scene(spec.scene, c.overrides, c.seed);
+  Scene scene = load_scene(spec.scene, c.overrides, c.seed, c.origins);
   try {
     build_initial_state(scene);
     make_method(scene.system, scene.method);  // the checks a run makes at its start
@@ -107,12 +107,12 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
   int code = stage(ranks, leader, [&] {
     spec = read_sweep(options.file);
     if (options.out) spec.out = *options.out;
-    if (spec.seeds.empty()) spec.seeds = {load_scene(spec.scene, spec.fixed).seed};
+    if (spec.seeds.empty()) spec.seeds = {load_scene(spec.scene, spec.fixed, std::nullopt, spec.fixed_origins).seed};
     cases = spec.cases();
     std::string errors;
     for (const SweepCase& c : cases) {
       try {
-        digests.push_back(scene_digest(load_scene(spec.scene, c.overrides, c.seed).text));
+        digests.push_back(scene_digest(load_scene(spec.scene, c.overrides, c.seed, c.origins).text));
       } catch (const SceneError& e) {
         errors += "\n  case " + std::to_string(c.index) + " (" + describe_case(spec, c) +
                   "): " + e.what();

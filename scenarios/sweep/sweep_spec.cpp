@@ -58,12 +58,12 @@ std::optional<double> number_of(const toml::node& node) {
 
 /// Flattens `sweep.set` into "key=value" (nested tables give dotted keys).
 void flatten_set(const toml::table& table, const std::string& prefix, const TableReader& reader,
-                 std::vector<std::string>& out) {
+                 std::vector<std::string>& out, std::vector<std::string>& origins) {
   for (auto&& [key, value] : table) {
     const std::string path =
         prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
     if (const auto* t = value.as_table()) {
-      flatten_set(*t, path, reader, out);
+      flatten_set(*t, path, reader, out, origins);
       continue;
     }
     const std::string text = override_text(value);
@@ -77,6 +77,7 @@ void flatten_set(const toml::table& table, const std::string& prefix, const Tabl
                        "give the seeds there (seeds = [" +
                        text + "])");
     out.push_back(path + "=" + text);
+    origins.push_back(reader.where(value));
   }
 }
 
@@ -128,6 +129,7 @@ SweepAxis read_axis(TableReader& vary, const toml::table& raw) {
     const auto* s = element.as_string();
     value.label = s != nullptr ? s->get() : value.text;
     value.number = number_of(element);
+    value.where = vary.where(element);
     axis.values.push_back(std::move(value));
   }
   return axis;
@@ -164,8 +166,12 @@ std::vector<SweepCase> SweepSpec::cases() const {
       c.choice = choice;
       c.seed = seed;
       c.overrides = fixed;
-      for (std::size_t a = 0; a < axes.size(); ++a)
+      c.origins = fixed_origins;
+      c.origins.resize(c.overrides.size());
+      for (std::size_t a = 0; a < axes.size(); ++a) {
         c.overrides.push_back(axes[a].key + "=" + axes[a].values[choice[a]].text);
+        c.origins.push_back(axes[a].values[choice[a]].where);
+      }
       out.push_back(std::move(c));
     }
   }
@@ -223,7 +229,7 @@ SweepSpec read_sweep(const std::string& path) {
     if (set == nullptr)
       sweep->fail("set",
                   "is not a table (write set = { \"time.end\" = 1.0 } or a [sweep.set] section)");
-    flatten_set(*set, "", *sweep, spec.fixed);
+    flatten_set(*set, "", *sweep, spec.fixed, spec.fixed_origins);
   }
   std::vector<TableReader> vary = sweep->tables("vary");
   const toml::array* vary_raw = raw->get_as<toml::array>("vary");

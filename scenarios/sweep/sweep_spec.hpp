@@ -26,6 +26,7 @@ struct SweepValue {
   std::string text;   ///< As TOML, passed to --set ("0.00033", "\"kick\"", "[0, 0, -9.81]").
   std::string label;  ///< As shown in tables: text, strings without their quotes.
   std::optional<double> number;  ///< The value when it is a number (integer or float).
+  std::string where;  ///< "sweep.toml:LINE" of the value, for the scene's messages about it.
 };
 
 /// A `[[sweep.vary]]` entry: a scene key and the values it takes.
@@ -43,6 +44,7 @@ struct SweepCase {
   std::vector<std::size_t> choice;     ///< Per axis: index into its values.
   std::uint64_t seed = 1;              ///< Passed as --seed.
   std::vector<std::string> overrides;  ///< "key=value": the fixed set, then the varied keys.
+  std::vector<std::string> origins;    ///< Per override: "sweep.toml:LINE" where it is written.
 };
 
 /// A sweep file read and checked.
@@ -51,6 +53,7 @@ struct SweepSpec {
   std::string scene;                 ///< Path of the scene file (relative paths resolved).
   std::string out;                   ///< Output directory.
   std::vector<std::string> fixed;    ///< "key=value" from sweep.set, in file order.
+  std::vector<std::string> fixed_origins;  ///< Per fixed entry: "sweep.toml:LINE" of its value.
   std::vector<SweepAxis> axes;       ///< The vary entries, in file order.
   std::vector<std::uint64_t> seeds;  ///< Empty: the scene's own seed (filled in by the runner).
 

@@ -1,6 +1,7 @@
 #include "events/method_factory.hpp"
 
 #include "events/event_driven/engine.hpp"
+#include "events/monte_carlo/engine.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,8 @@ std::unique_ptr<CollisionMethod> make_method(System system, const MethodSettings
   switch (settings.kind) {
     case MethodKind::EventDriven:
       return std::make_unique<EventDrivenEngine>(std::move(system), settings.event_driven);
+    case MethodKind::MonteCarlo:
+      return std::make_unique<MonteCarloEngine>(std::move(system), settings.monte_carlo);
   }
   throw std::logic_error("make_method: unknown method kind");
 }
@@ -27,6 +30,9 @@ std::unique_ptr<CollisionMethod> restore_method(System system, const MethodSetti
     case MethodKind::EventDriven:
       return std::make_unique<EventDrivenEngine>(std::move(system), settings.event_driven,
                                                  read_engine_state(saved));
+    case MethodKind::MonteCarlo:
+      return std::make_unique<MonteCarloEngine>(std::move(system), settings.monte_carlo,
+                                                read_monte_carlo_state(saved));
   }
   throw std::logic_error("restore_method: unknown method kind");
 }

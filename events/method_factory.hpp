@@ -9,21 +9,24 @@
 #include "core/system.hpp"
 #include "events/event_driven/options.hpp"
 #include "events/method.hpp"
+#include "events/monte_carlo/options.hpp"
 
 namespace carom {
 
 /// The collision methods (DESIGN.md section 8).
 enum class MethodKind {
   EventDriven,  ///< Exact flights and binary hard-sphere collisions (events/event_driven/).
+  MonteCarlo,   ///< Time steps, collisions with fictitious partners (events/monte_carlo/).
 };
 
 /// The scene names of the methods, in MethodKind order.
-inline constexpr std::array<std::string_view, 1> kMethodNames{"event_driven"};
+inline constexpr std::array<std::string_view, 2> kMethodNames{"event_driven", "monte_carlo"};
 
 /// What a scene says about its method: which one, and each method's own settings.
 struct MethodSettings {
   MethodKind kind = MethodKind::EventDriven;
   EventDrivenOptions event_driven;  ///< Flights, collapse remedies, grid (event_driven).
+  MonteCarloOptions monte_carlo;    ///< Step, cells, collision frequency, seed (monte_carlo).
 };
 
 /// The scene name of a method.

@@ -12,6 +12,7 @@
 #include "events/event_driven/engine.hpp"
 #include "events/monte_carlo/engine.hpp"
 #include "scenarios/scene/granular_gas.hpp"
+#include "scenarios/scene/scene.hpp"
 #include "test_support.hpp"
 
 namespace carom {
@@ -365,6 +366,51 @@ TEST(MonteCarloActions, StepsLandOnActions) {
   mc.run_until(0.01);
   EXPECT_EQ(mc.time(), 0.01);
   EXPECT_EQ(fired, 29);  // 0, 0.00035, ..., 0.0098
+}
+
+// A scene chooses the method and its keys: [method] kind = "monte_carlo" builds a
+// MonteCarloEngine with the [monte_carlo] settings; the section without that kind, and a
+// misspelled choice, are errors naming the key.
+TEST(MonteCarloScene, MethodAndKeysFromTheScene) {
+  const std::string base = R"(
+[domain]
+min = [0, 0, 0]
+max = [0.01, 0.01, 0.01]
+[[species]]
+name = "glass"
+diameter = 5e-4
+density = 2500
+fill = { count = 200 }
+[initial]
+rms_velocity = 0.1
+[time]
+end = 0.01
+)";
+  Scene scene = parse_scene(base + R"(
+[method]
+kind = "monte_carlo"
+[monte_carlo]
+time_step = 1e-4
+cell_size = 2.5e-3
+frequency = "mean_velocity"
+contact_value = "enskog"
+seed = 17
+)", "mc.toml");
+  EXPECT_EQ(scene.method.kind, MethodKind::MonteCarlo);
+  EXPECT_EQ(scene.method.monte_carlo.time_step, 1e-4);
+  EXPECT_EQ(scene.method.monte_carlo.frequency, CollisionFrequency::MeanVelocity);
+  EXPECT_EQ(scene.method.monte_carlo.contact_value, ContactValue::Enskog);
+  EXPECT_EQ(scene.method.monte_carlo.seed, 17u);
+  build_initial_state(scene);
+  auto sim = make_method(scene.system, scene.method);
+  EXPECT_EQ(sim->kind(), "monte_carlo");
+  EXPECT_TRUE(sim->run_until(0.01));
+  EXPECT_EQ(sim->time(), 0.01);
+  EXPECT_EQ(sim->statistics().events, 100u);  // steps
+  EXPECT_GT(sim->statistics().wall_events, 0u);
+  EXPECT_THROW(parse_scene(base + "[monte_carlo]\ntime_step = 1e-4\n", "mc.toml"), SceneError);
+  EXPECT_THROW(parse_scene(base + "[method]\nkind = \"monte_carlo\"\n[monte_carlo]\nfrequency = \"mean\"\n", "mc.toml"),
+               SceneError);
 }
 
 }  // namespace

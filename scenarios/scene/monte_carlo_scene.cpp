@@ -18,7 +18,7 @@ void read_monte_carlo(TableReader& root, Scene& scene) {
   mc.time_step = m->number("time_step", 0.0,
                            Range::non_negative("particle time step dt_p, s (0: 0.1 mean free time)"));
   mc.cell_size = m->number("cell_size", 0.0,
-                           Range::non_negative("collision cell edge, m (0: 4 largest diameters, 8 particles a cell)"));
+                           Range::non_negative("collision cell edge, m (0: 4 largest diameters, 32 particles a cell)"));
   const std::string frequency = m->string("frequency", "mean_relative_speed", {"mean_relative_speed", "mean_velocity"});
   mc.frequency = frequency == "mean_velocity" ? CollisionFrequency::MeanVelocity : CollisionFrequency::MeanRelativeSpeed;
   const std::string contact = m->string("contact_value", "none", {"none", "enskog"});

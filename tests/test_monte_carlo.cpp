@@ -368,6 +368,61 @@ TEST(MonteCarloActions, StepsLandOnActions) {
   EXPECT_EQ(fired, 29);  // 0, 0.00035, ..., 0.0098
 }
 
+// contact_value = "enskog" at phi = 0.1: 4000 particles, the whole box one cell (so the cell's
+// solid fraction is exactly 0.1 and g0 = 1.30316, no noise from small cells). Reference:
+// VALIDATION.md's Enskog-Carnahan-Starling omega = 1.76454 at T = 1, times sqrt(T) of each
+// stretch. Tolerance 2 %: ~4e4 travelling collisions (0.5 %; measured ratio 0.9905); T's random
+// walk is followed stretch by stretch.
+TEST(MonteCarloGas, EnskogContactValueGivesTheEnskogRate) {
+  GranularGasSpec spec;
+  spec.count = 4000;
+  spec.volume_fraction = 0.1;
+  spec.seed = 23;
+  const System gas = make_granular_gas(spec);
+  MonteCarloOptions options;
+  options.cell_size = gas.domain.length().x();
+  options.contact_value = ContactValue::Enskog;
+  MonteCarloEngine mc(gas, options);
+  const RateMeasurement r = measure_mc_rate(mc, 10.0 / 1.76454);
+  const double ratio = r.measured / (r.predicted * test::carnahan_starling_g0(0.1));
+  std::printf("enskog: %.0f collisions, rate %.4f, Enskog %.4f, ratio %.4f\n", r.collisions, r.measured,
+              r.predicted * test::carnahan_starling_g0(0.1), ratio);
+  EXPECT_NEAR(test::carnahan_starling_g0(0.1) * boltzmann_rate(4000 / gas.domain.volume(), 1.0), 1.76454, 1e-4);
+  EXPECT_NEAR(ratio, 1.0, 0.02);
+}
+
+// Relax flights (the gas's drag, set by the fluid step) are flown exactly across steps: one
+// particle alone (no partners) in a periodic box, whose synchronising action every 0.013 s sets
+// rate 1/tau = 20/s and drive = rate u + g (u = (1, 0, 0.5) m/s): its position at the end
+// against RelaxFlight's closed form composed over the action intervals (the steps of 0.004 s
+// in between must not change it beyond round-off, 1e-12 m).
+TEST(MonteCarloFlights, RelaxFlightsFlownExactly) {
+  System system;
+  system.domain.upper = Vec3(1, 1, 1);
+  system.domain.periodic = {true, true, true};
+  system.flight.gravity = Vec3(0, 0, -9.81);
+  system.species.push_back(Species{"bead", 1e-3, 2500});
+  system.materials = MaterialTable(1, 0, ContactLaw{}, ContactLaw{});
+  system.add_particle(0, Vec3(0.5, 0.5, 0.5), Vec3(0.0, 0.3, 0.0));
+  MonteCarloOptions options;
+  options.time_step = 0.004;
+  options.flight_model = FlightModel::Relax;
+  MonteCarloEngine mc(system, options);
+  const RelaxFlight drag{20.0, Vec3(20.0, 0.0, 10.0 - 9.81)};
+  mc.add_synchronising_action("fluid_step", 0.0, 0.013, [&](GlobalStep& step) { step.flights[0] = drag; });
+  mc.run_until(0.1);
+  // Closed form: the first interval starts with the drag (the action fires at t = 0).
+  Vec3 r(0.5, 0.5, 0.5), v(0.0, 0.3, 0.0);
+  for (double t = 0.0; t < 0.1 - 1e-12; t += 0.013) {
+    const double s = std::min(0.013, 0.1 - t);
+    r += drag.displacement(v, s);
+    v = drag.velocity(v, s);
+  }
+  for (int k = 0; k < 3; ++k) r[k] -= std::floor(r[k]);
+  EXPECT_NEAR((mc.position(0) - r).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((mc.velocity(0) - v).norm(), 0.0, 1e-12);
+}
+
 // A scene chooses the method and its keys: [method] kind = "monte_carlo" builds a
 // MonteCarloEngine with the [monte_carlo] settings; the section without that kind, and a
 // misspelled choice, are errors naming the key.

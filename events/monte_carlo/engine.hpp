@@ -26,7 +26,8 @@
 ///
 /// Pieces, one file each: options.hpp, collision_grid.* (cell statistics), partner_sampling.*
 /// (partner velocity, impact geometry, contact value), particle_step.cpp (one particle's
-/// step), engine.cpp (steps, actions, views, counters), engine_state_io.cpp (checkpoints).
+/// step), engine_setup.cpp (construction, validation, default step and cells), engine.cpp
+/// (steps, actions, views, counters), engine_state_io.cpp (checkpoints).
 #include <csignal>
 #include <cstdint>
 #include <functional>

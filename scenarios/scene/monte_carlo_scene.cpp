@@ -13,8 +13,6 @@ void read_monte_carlo(TableReader& root, Scene& scene) {
   mc.seed = scene.seed ^ 0x9e3779b97f4a7c15ULL;
   auto m = root.table("monte_carlo");
   if (!m) return;
-  if (scene.method.kind != MethodKind::MonteCarlo)
-    m->fail("time_step", "[monte_carlo] is only read with [method] kind = \"monte_carlo\"");
   mc.time_step = m->number("time_step", 0.0,
                            Range::non_negative("particle time step dt_p, s (0: 0.1 mean free time)"));
   mc.cell_size = m->number("cell_size", 0.0,

@@ -7,8 +7,9 @@
 namespace carom {
 
 /// Reads [monte_carlo] into scene.method.monte_carlo, and gives it the scene's flight model
-/// (after [flight] and [gas]) and, unless the section names its own, initial.seed. The section
-/// is an error unless [method] kind = "monte_carlo".
+/// (after [flight] and [gas]) and, unless the section names its own, initial.seed. Read
+/// whatever [method] kind says (used only by "monte_carlo"), so that one scene can be swept
+/// over methods.
 void read_monte_carlo(TableReader& root, Scene& scene);
 
 }  // namespace carom

@@ -423,6 +423,30 @@ TEST(MonteCarloFlights, RelaxFlightsFlownExactly) {
   EXPECT_NEAR((mc.velocity(0) - v).norm(), 0.0, 1e-12);
 }
 
+// A step far longer than the mean free time (nu dt = 3) is refused: MethodFailure with status
+// monte_carlo_step_too_long, a message naming a step that would do, and the run left at the
+// start of the refused step (time, states and counters as before it).
+TEST(MonteCarloFailure, StepLongerThanTheMeanFreeTimeIsRefused) {
+  GranularGasSpec spec;
+  spec.count = 500;
+  spec.volume_fraction = 0.1;
+  const System gas = make_granular_gas(spec);
+  MonteCarloOptions options;
+  options.time_step = 3.0 / 1.36;  // Boltzmann rate at phi = 0.1: 1.354 per unit time
+  MonteCarloEngine mc(gas, options);
+  const Vec3 before = mc.position(7);
+  try {
+    mc.run_until(10.0);
+    FAIL() << "a step of 3 mean free times ran";
+  } catch (const MethodFailure& e) {
+    EXPECT_EQ(e.status, "monte_carlo_step_too_long");
+    EXPECT_NE(std::string(e.what()).find("time_step below"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(mc.time(), 0.0);
+  EXPECT_EQ(mc.position(7), before);
+  EXPECT_EQ(mc.statistics().pair_events, 0u);
+}
+
 // A scene chooses the method and its keys: [method] kind = "monte_carlo" builds a
 // MonteCarloEngine with the [monte_carlo] settings; a value out of range and a misspelled
 // choice are errors naming the key.

@@ -1,9 +1,13 @@
 #pragma once
 /// A seeded, reproducible random number generator (same seed -> same stream on any platform).
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "vec3.hpp"
 
@@ -40,6 +44,25 @@ class Rng {
   }
   /// Uniform integer in [0, n).
   std::uint64_t below(std::uint64_t n) { return static_cast<std::uint64_t>(uniform() * n); }
+
+  /// The complete state as text (the engine's standard textual state, then the spare normal
+  /// deviate as its exact bits), for checkpoints: set_state(state()) continues the same stream.
+  std::string state() const {
+    std::ostringstream out;
+    out << engine_ << ' ' << (has_spare_ ? 1 : 0) << ' ' << std::bit_cast<std::uint64_t>(spare_);
+    return out.str();
+  }
+  /// Restores what state() wrote. Throws std::invalid_argument when `text` is not such a state.
+  void set_state(const std::string& text) {
+    std::istringstream in(text);
+    int spare_flag = 0;
+    std::uint64_t spare_bits = 0;
+    in >> engine_ >> spare_flag >> spare_bits;
+    if (!in || (spare_flag != 0 && spare_flag != 1))
+      throw std::invalid_argument("not a random generator state");
+    has_spare_ = spare_flag == 1;
+    spare_ = std::bit_cast<double>(spare_bits);
+  }
 
  private:
   std::mt19937_64 engine_;

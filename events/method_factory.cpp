@@ -2,6 +2,7 @@
 
 #include "events/event_driven/engine.hpp"
 #include "events/soft_sphere/engine.hpp"
+#include "events/monte_carlo/engine.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,8 @@ std::unique_ptr<CollisionMethod> make_method(System system, const MethodSettings
       return std::make_unique<EventDrivenEngine>(std::move(system), settings.event_driven);
     case MethodKind::SoftSphere:
       return std::make_unique<SoftSphereEngine>(std::move(system), settings.soft_sphere);
+    case MethodKind::MonteCarlo:
+      return std::make_unique<MonteCarloEngine>(std::move(system), settings.monte_carlo);
   }
   throw std::logic_error("make_method: unknown method kind");
 }
@@ -32,6 +35,9 @@ std::unique_ptr<CollisionMethod> restore_method(System system, const MethodSetti
                                                  read_engine_state(saved));
     case MethodKind::SoftSphere:
       return std::make_unique<SoftSphereEngine>(std::move(system), settings.soft_sphere, saved);
+    case MethodKind::MonteCarlo:
+      return std::make_unique<MonteCarloEngine>(std::move(system), settings.monte_carlo,
+                                                read_monte_carlo_state(saved));
   }
   throw std::logic_error("restore_method: unknown method kind");
 }

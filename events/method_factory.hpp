@@ -10,6 +10,7 @@
 #include "events/event_driven/options.hpp"
 #include "events/soft_sphere/options.hpp"
 #include "events/method.hpp"
+#include "events/monte_carlo/options.hpp"
 
 namespace carom {
 
@@ -17,16 +18,19 @@ namespace carom {
 enum class MethodKind {
   EventDriven,  ///< Exact flights and binary hard-sphere collisions (events/event_driven/).
   SoftSphere,   ///< Soft-sphere DEM: contact forces at a fixed step (events/soft_sphere/).
+  MonteCarlo,   ///< Time steps, collisions with fictitious partners (events/monte_carlo/).
 };
 
 /// The scene names of the methods, in MethodKind order.
-inline constexpr std::array<std::string_view, 2> kMethodNames{"event_driven", "soft_sphere"};
+inline constexpr std::array<std::string_view, 3> kMethodNames{"event_driven", "soft_sphere",
+                                                              "monte_carlo"};
 
 /// What a scene says about its method: which one, and each method's own settings.
 struct MethodSettings {
   MethodKind kind = MethodKind::EventDriven;
   EventDrivenOptions event_driven;  ///< Flights, collapse remedies, grid (event_driven).
   SoftSphereOptions soft_sphere;    ///< Contact model, elastic constants, step (soft_sphere).
+  MonteCarloOptions monte_carlo;    ///< Step, cells, collision frequency, seed (monte_carlo).
 };
 
 /// The scene name of a method.

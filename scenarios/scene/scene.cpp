@@ -9,6 +9,7 @@
 #include "scenarios/scene/gas_scene.hpp"
 #include "scenarios/scene/analysis_scene.hpp"
 #include "scenarios/scene/method_scene.hpp"
+#include "scenarios/scene/monte_carlo_scene.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/collisions_scene.hpp"
 #include "scenarios/scene/domain_scene.hpp"
@@ -49,7 +50,7 @@ namespace {
 
 const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
                                             "collisions", "flight", "initial", "time",    "output", "engine", "gas",
-                                            "analysis", "method", "soft_sphere"};
+                                            "analysis", "method", "soft_sphere", "monte_carlo"};
 
 void read_meta(TableReader& root, Scene& scene, const std::string& fallback_name) {
   scene.name = fallback_name;
@@ -111,6 +112,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   read_analysis(root, scene);
   read_method(root, scene);
   read_soft_sphere(root, scene);
+  read_monte_carlo(root, scene);
   root.finish();
   return scene;
 }

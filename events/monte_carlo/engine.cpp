@@ -1,0 +1,288 @@
+// The Monte Carlo engine: steps, actions, what a run shows inside a step, counters. Setup is in
+// engine_setup.cpp, one particle's step in particle_step.cpp.
+#include "events/monte_carlo/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace carom {
+
+Vec3 MonteCarloEngine::wrapped(Vec3 r) const {
+  const Domain& d = system_.domain;
+  for (int k = 0; k < 3; ++k) {
+    if (!d.periodic[k]) continue;
+    const double length = d.upper[k] - d.lower[k];
+    if (r[k] < d.lower[k] || r[k] >= d.upper[k]) {
+      r[k] -= length * std::floor((r[k] - d.lower[k]) / length);
+      if (r[k] >= d.upper[k]) r[k] = d.lower[k];  // round-off of a value just below lower
+    }
+  }
+  return r;
+}
+
+void MonteCarloEngine::add_periodic_action(std::string name, double first_time, double interval,
+                                           std::function<void()> action) {
+  if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
+  for (const auto& [saved_name, saved_time] : restored_action_times_)
+    if (saved_name == name) first_time = saved_time;
+  if (computed_ && first_time < step_end_)
+    throw std::logic_error(name + ": an action cannot start inside the step under way (at " +
+                           std::to_string(first_time) + " s, the step ends at " +
+                           std::to_string(step_end_) + " s)");
+  actions_.push_back(Action{std::move(name), first_time, interval, std::move(action), {}});
+}
+
+void MonteCarloEngine::add_synchronising_action(std::string name, double first_time, double interval,
+                                                std::function<void(GlobalStep&)> step) {
+  if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
+  if (!(first_time >= time_)) throw std::invalid_argument(name + ": the first step is before the current time");
+  for (const auto& [saved_name, saved_time] : restored_action_times_)
+    if (saved_name == name) first_time = saved_time;
+  if (computed_ && first_time < step_end_)
+    throw std::logic_error(name + ": an action cannot start inside the step under way");
+  actions_.push_back(Action{std::move(name), first_time, interval, {}, std::move(step)});
+}
+
+void MonteCarloEngine::fire_due_actions() {
+  for (bool fired = true; fired;) {
+    fired = false;
+    for (Action& a : actions_) {
+      if (a.next_time > time_) continue;
+      fired = true;
+      if (a.step) {
+        ParticleStore& p = system_.particles;
+        GlobalStep step{time_, p, flights_};
+        a.step(step);
+        if (flights_.size() != p.size()) throw std::logic_error(a.name + " changed the number of flights");
+        hold_fixed_particles();
+      } else {
+        a.action();
+      }
+      a.next_time += a.interval;
+    }
+  }
+}
+
+bool MonteCarloEngine::run_until(double t_end) {
+  if (!(t_end >= time_))
+    throw std::invalid_argument("run_until: the end time " + std::to_string(t_end) +
+                                " s is before the current time " + std::to_string(time_) + " s");
+  for (;;) {
+    if (computed_) {
+      if (t_end < step_end_) {
+        time_ = t_end;
+        present(time_);
+        return true;
+      }
+      commit_step();
+      if (time_ == t_end) return true;
+      if (stop_flag_ != nullptr && *stop_flag_ != 0) return false;
+    }
+    if (time_ >= t_end) return true;
+    fire_due_actions();
+    double end = time_ + time_step_;
+    for (const Action& a : actions_) end = std::min(end, a.next_time);
+    step_end_ = end;
+    compute_step();
+  }
+}
+
+void MonteCarloEngine::compute_step() {
+  ParticleStore& p = system_.particles;
+  const std::size_t n = p.size();
+  step_start_ = time_;
+  start_rng_ = rng_;
+  start_statistics_ = statistics_;
+  start_travelling_ = travelling_;
+  start_position_ = p.position;
+  start_velocity_ = p.velocity;
+  start_spin_ = p.spin;
+  end_position_.resize(n);
+  end_velocity_.resize(n);
+  end_spin_.resize(n);
+  grid_.clear();
+  cell_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    cell_[i] = grid_.add(p.position[i], p.species[i], p.radius[i], p.velocity[i], p.spin[i]);
+  log_.clear();
+  log_begin_.assign(n + 1, 0);
+  step_bound_exceeded_ = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    log_begin_[i] = log_.size();
+    step_particle(i, cell_[i]);
+  }
+  log_begin_[n] = log_.size();
+  computed_ = true;
+
+  std::size_t collisions = 0;
+  for (const StepEvent& e : log_) collisions += e.partner >= 0 ? 1 : 0;
+  const double mean = moving_count_ > 0 ? double(collisions) / double(moving_count_) : 0.0;
+  // Judged only on a meaningful count (100 collisions in the step): a few particles colliding
+  // twice in one step is chance, not a step too long.
+  if (collisions >= 100 && mean > options_.max_collisions_per_step) {
+    // Leave the run at the start of this step, as it was.
+    const double length = step_end_ - step_start_;
+    computed_ = false;
+    rng_ = start_rng_;
+    step_end_ = step_start_;
+    std::ostringstream out;
+    out << "Monte Carlo step from t = " << step_start_ << " s of " << length
+        << " s: the particles collided " << mean
+        << " times each on average, more than max_collisions_per_step = " << options_.max_collisions_per_step
+        << ": the partner statistics of the collision cells are frozen over a step, so they lag behind "
+           "the particles; set [monte_carlo] time_step below "
+        << time_step_ * options_.max_collisions_per_step / mean << " s";
+    throw MethodFailure("monte_carlo_step_too_long", out.str());
+  }
+  max_collisions_per_step_ = std::max(max_collisions_per_step_, mean);
+}
+
+void MonteCarloEngine::commit_step() {
+  ParticleStore& p = system_.particles;
+  statistics_ = start_statistics_;
+  travelling_ = start_travelling_;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1]; ++k)
+      book(log_[k], p.species[i], statistics_, travelling_);
+  derive_pair_counts(statistics_, travelling_);
+  ++statistics_.events;
+  bound_exceeded_ += step_bound_exceeded_;
+  time_ = step_end_;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.position[i] = wrapped(end_position_[i]);
+    p.velocity[i] = end_velocity_[i];
+    p.spin[i] = end_spin_[i];
+    p.clock[i] = time_;
+  }
+  step_start_ = step_end_;
+  computed_ = false;
+}
+
+void MonteCarloEngine::present(double t) {
+  ParticleStore& p = system_.particles;
+  statistics_ = start_statistics_;
+  travelling_ = start_travelling_;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.position[i] = start_position_[i];
+    p.velocity[i] = start_velocity_[i];
+    p.spin[i] = start_spin_[i];
+    p.clock[i] = step_start_;
+    for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1] && log_[k].time <= t; ++k) {
+      const StepEvent& e = log_[k];
+      book(e, p.species[i], statistics_, travelling_);
+      p.position[i] = e.position;
+      p.velocity[i] = e.velocity;
+      p.spin[i] = e.spin;
+      p.clock[i] = e.time;
+    }
+  }
+  derive_pair_counts(statistics_, travelling_);
+}
+
+void MonteCarloEngine::book(const StepEvent& e, std::uint32_t s, RunStatistics& st,
+                            std::vector<std::uint64_t>& travelling) const {
+  st.dissipated_energy += e.dissipated;
+  if (e.partner < 0) {
+    const std::size_t w = static_cast<std::size_t>(-1 - e.partner);
+    ++st.wall_collisions[s * st.wall_count + w];
+    ++st.wall_events;
+    st.wall_impulse[w] -= e.impulse;
+    return;
+  }
+  const std::size_t t = static_cast<std::size_t>(e.partner), species = st.species_count;
+  ++travelling[s * species + t];
+  const double half_impulse = 0.5 * e.impulse.norm();
+  st.pair_impulse[s * species + t] += half_impulse;
+  if (s != t) st.pair_impulse[t * species + s] += half_impulse;
+  st.virial += 0.5 * e.separation * e.impulse.transpose();
+}
+
+void MonteCarloEngine::derive_pair_counts(RunStatistics& st, const std::vector<std::uint64_t>& travelling) const {
+  const std::size_t species = st.species_count;
+  std::uint64_t total = 0;
+  for (std::size_t s = 0; s < species; ++s)
+    for (std::size_t t = 0; t < species; ++t) {
+      const std::uint64_t both =
+          s == t ? travelling[s * species + s] : travelling[s * species + t] + travelling[t * species + s];
+      st.pair_collisions[s * species + t] = both / 2;
+      total += travelling[s * species + t];
+    }
+  st.pair_events = total / 2;
+}
+
+Vec3 MonteCarloEngine::position(std::size_t i) const {
+  const ParticleStore& p = system_.particles;
+  const double s = time_ - p.clock[i];
+  if (s == 0.0) return p.position[i];
+  return wrapped(p.position[i] + flight_of(i).displacement(p.velocity[i], s));
+}
+
+Vec3 MonteCarloEngine::velocity(std::size_t i) const {
+  const ParticleStore& p = system_.particles;
+  const double s = time_ - p.clock[i];
+  if (s == 0.0) return p.velocity[i];
+  return flight_of(i).velocity(p.velocity[i], s);
+}
+
+Energies MonteCarloEngine::energies() const {
+  Energies e;
+  const ParticleStore& p = system_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    e.translational += 0.5 * p.mass[i] * velocity(i).squaredNorm();
+    e.rotational += 0.5 * p.inertia[i] * p.spin[i].squaredNorm();
+    e.potential -= p.mass[i] * system_.flight.gravity.dot(position(i));
+  }
+  e.dissipated = statistics_.dissipated_energy;
+  return e;
+}
+
+std::vector<MethodQuantity> MonteCarloEngine::quantities() const {
+  std::uint64_t travelling = 0;
+  for (std::uint64_t c : travelling_) travelling += c;
+  const double per_cell = double(system_.particles.size()) / double(grid_.cell_count());
+  return {
+      {"time_step", time_step_, "s", "particle time step dt_p of the Monte Carlo method"},
+      {"cell_size", grid_.cell_size().minCoeff(), "m", "smallest edge of the collision cells"},
+      {"particles_per_cell", per_cell, "", "mean number of particles in a collision cell"},
+      {"max_collisions_per_step", max_collisions_per_step_, "",
+       "largest mean number of collisions per moving particle in one step"},
+      {"travelling_collisions", double(travelling), "",
+       "collisions of particles with fictitious partners (each is half a pair collision)"},
+      {"thinning_bound_exceeded", double(bound_exceeded_), "",
+       "collision trials whose relative speed exceeded its bound (the rate is then too low)"},
+  };
+}
+
+MonteCarloState MonteCarloEngine::state() const {
+  MonteCarloState s;
+  s.particles = system_.particles;
+  s.flights = flights_;
+  s.time = time_;
+  s.time_step = time_step_;
+  s.cell_size = cell_size_;
+  s.max_collisions_per_step = max_collisions_per_step_;
+  s.bound_exceeded = bound_exceeded_;
+  if (computed_) {
+    s.particles.position = start_position_;
+    s.particles.velocity = start_velocity_;
+    s.particles.spin = start_spin_;
+    std::fill(s.particles.clock.begin(), s.particles.clock.end(), step_start_);
+    s.statistics = start_statistics_;
+    s.travelling = start_travelling_;
+    s.rng = start_rng_.state();
+    s.step_start = step_start_;
+    s.step_end = step_end_;
+  } else {
+    s.statistics = statistics_;
+    s.travelling = travelling_;
+    s.rng = rng_.state();
+    s.step_start = s.step_end = time_;
+  }
+  for (const Action& a : actions_) s.action_times.emplace_back(a.name, a.next_time);
+  return s;
+}
+
+}  // namespace carom

@@ -298,26 +298,29 @@ void SoftSphereEngine::step(double dt) {
   ParticleStore& p = system_.particles;
   half_kick(dt);
   const Domain& d = system_.domain;
-  const std::vector<Vec3>& reference = list_.reference_positions();
-  const double limit = 0.25 * list_.skin() * list_.skin();
-  bool rebuild = reference.size() != p.size();
+  // The list stays valid while no particle can have moved half the skin since it was built:
+  // every step moves each particle by its half-step velocity times dt, so the sum over the
+  // steps of the largest such displacement bounds them all (cheaper than comparing each
+  // position with its reference, and never later than that test would rebuild).
+  double fastest2 = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (inverse_mass_[i] == 0.0) continue;
     Vec3& r = p.position[i];
-    r += dt * p.velocity[i];
+    const Vec3& v = p.velocity[i];
+    r += dt * v;
+    fastest2 = std::max(fastest2, v.squaredNorm());
     for (int k = 0; k < 3; ++k) {
       if (!d.periodic[k]) continue;
       const double length = d.upper[k] - d.lower[k];
       if (r[k] >= d.upper[k]) r[k] -= length;
       else if (r[k] < d.lower[k]) r[k] += length;
     }
-    if (!rebuild) {  // moved more than half the skin since the list was built?
-      Vec3 moved = r - reference[i];
-      d.minimum_image(moved);
-      rebuild = moved.squaredNorm() > limit;
-    }
   }
-  if (rebuild) list_.build(p.position, p.radius, system_.walls);
+  travelled_ += std::sqrt(fastest2) * dt;
+  if (travelled_ > 0.5 * list_.skin() || list_.reference_positions().size() != p.size()) {
+    list_.build(p.position, p.radius, system_.walls);
+    travelled_ = 0.0;
+  }
   compute_forces(dt);
   half_kick(dt);
   book_dissipation(dt);

@@ -133,6 +133,7 @@ class SoftSphereEngine final : public CollisionMethod {
   double elastic_ = 0;      // stored in the springs at the last force evaluation, J
   double gas_work_ = 0;     // J
   bool gas_forces_ = false; // a synchronising action has set flights (else gravity alone)
+  double travelled_ = 0;    // bound on any particle's displacement since the list was built, m
   double energy_start_ = 0;   // energies().total() at the start, J
   double energy_scale_ = 0;   // largest kinetic + elastic energy seen, J
   double worst_overlap_ = 0;  // largest overlap / smaller radius seen

@@ -21,6 +21,7 @@ void SoftSphereEngine::save_state(const h5::Group& group) const {
   group.set_attribute("elastic", elastic_);
   group.set_attribute("gas_work", gas_work_);
   group.set_attribute("gas_forces", static_cast<std::uint8_t>(gas_forces_ ? 1 : 0));
+  group.set_attribute("travelled", travelled_);
   group.set_attribute("energy_start", energy_start_);
   group.set_attribute("energy_scale", energy_scale_);
   group.set_attribute("worst_overlap", worst_overlap_);
@@ -121,6 +122,7 @@ SoftSphereEngine::SoftSphereEngine(System system, SoftSphereOptions options, con
   elastic_ = saved.attribute<double>("elastic");
   gas_work_ = saved.attribute<double>("gas_work");
   gas_forces_ = saved.attribute<std::uint8_t>("gas_forces") != 0;
+  travelled_ = saved.attribute<double>("travelled");
   energy_start_ = saved.attribute<double>("energy_start");
   energy_scale_ = saved.attribute<double>("energy_scale");
   worst_overlap_ = saved.attribute<double>("worst_overlap");

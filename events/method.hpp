@@ -46,8 +46,9 @@ struct MethodQuantity {
 };
 
 /// A method that cannot go on (an unstable step, overlaps beyond bounds): the run stops with
-/// `status` in summary.json and the message, which names the cause and the remedy. The method
-/// is left at a consistent state (the last good step).
+/// `status` in summary.json and the message, which names the cause and the remedy. The state
+/// it stopped in may be mid-step: the run writes its summary and report, and no checkpoint of
+/// it (the last checkpoint written before stays).
 class MethodFailure : public std::runtime_error {
  public:
   MethodFailure(std::string status, const std::string& message)

@@ -143,17 +143,6 @@ void NeighbourList::build(const std::vector<Vec3>& position, const std::vector<d
   ++builds_;
 }
 
-bool NeighbourList::needs_rebuild(const std::vector<Vec3>& position) const {
-  if (reference_.size() != position.size()) return true;
-  const double limit = 0.25 * skin_ * skin_;
-  for (std::size_t i = 0; i < position.size(); ++i) {
-    Vec3 d = position[i] - reference_[i];
-    domain_.minimum_image(d);
-    if (d.squaredNorm() > limit) return true;
-  }
-  return false;
-}
-
 std::vector<PairContactState> NeighbourList::brute_force(const Domain& domain, double skin,
                                                          const std::vector<Vec3>& position,
                                                          const std::vector<double>& radius) {

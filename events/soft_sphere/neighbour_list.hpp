@@ -3,7 +3,7 @@
 ///
 /// A pair (i, j) is listed when the gap between the spheres is below the skin at the build;
 /// the list stays valid until some particle has moved more than half the skin since (then two
-/// particles can have closed the skin between them). Polydisperse systems (fines 1:10): the
+/// particles can have closed the skin between them; the engine bounds that displacement). Polydisperse systems (fines 1:10): the
 /// cells are sized by the smallest particles, and each pair is found from its larger member,
 /// which searches the cells within its own diameter plus the skin. Fines thus search 27 small
 /// cells, and no cell holds ~1000 fines as a grid sized by the largest particle would.
@@ -50,8 +50,6 @@ class NeighbourList {
   /// histories of the pairs that stay listed over from the previous lists.
   void build(const std::vector<Vec3>& position, const std::vector<double>& radius,
              const std::vector<Wall>& walls);
-  /// True when some particle moved more than half the skin since the last build.
-  bool needs_rebuild(const std::vector<Vec3>& position) const;
 
   std::vector<PairContactState>& pairs() { return pairs_; }
   const std::vector<PairContactState>& pairs() const { return pairs_; }

@@ -3,6 +3,8 @@
 // here is in a child process with a watchdog (test::finish_within).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "core/rng.hpp"
@@ -94,6 +96,82 @@ TEST(Collapse, BouncingBallWithoutTcModelThrowsDiagnostic) {
               });
 }
 
+// With the TC model on but a contact time far too short (1e-9 s) for the detector's window
+// (1e-5 s, 1000 collisions), the ball's elastic rattle on the floor (period ~ t_c) is caught.
+// The message must say that the TC model is on and what its setting does, never advise turning
+// it on (issue 20: it did).
+TEST(Collapse, DiagnosticWithTcModelOnDoesNotAdviseTurningItOn) {
+  test::expect_finishes(10, [] {
+    EventDrivenOptions options;
+    options.collapse.contact_time = 1e-9;
+    options.collapse.stall_window = 1e-5;
+    EventDrivenEngine sim(bouncing_ball(), options);
+    try {
+      sim.run_until(6.0);
+      ADD_FAILURE() << "no InelasticCollapse: the rattle was not caught";
+    } catch (const InelasticCollapse& collapse) {
+      const std::string message = collapse.what();
+      EXPECT_EQ(message.find("turn on the TC model"), std::string::npos) << message;
+      EXPECT_NE(message.find("the TC model is on (collapse contact_time = 1e-09 s)"), std::string::npos)
+          << message;
+      EXPECT_NE(message.find("soft_sphere"), std::string::npos) << message;
+    }
+  });
+}
+
+// Lasting contacts (issue 18): the 27-grain column of SettlingColumnFinishesWithTcModel, at
+// rest on the floor under the TC model (t_c = 1e-3 s), run on: its collision frequency per
+// particle climbs as the gaps between resting grains close. The monitor measures the mean
+// frequency over windows of 10 collisions per particle; the run is driven across the limit both
+// ways: a limit above every window's frequency up to t_end never fires, one below the largest
+// fires, with status lasting_contacts and a message naming the remedy (soft spheres).
+TEST(Collapse, LastingContactsStopTheRunOnlyAboveTheLimit) {
+  test::expect_finishes(60, [] {
+    // First the column's own frequencies, with the monitor off.
+    EventDrivenOptions options;
+    options.collapse.contact_time = 1e-3;
+    options.collapse.max_collision_frequency = 0.0;
+    EventDrivenEngine free_run(settling_column(), options);
+    double peak = 0, last_time = 0;
+    std::uint64_t last_collisions = 0;
+    const double t_end = 10.0;
+    for (double t = 0.5; t <= t_end + 1e-9; t += 0.5) {
+      free_run.run_until(t);
+      const RunStatistics& s = free_run.statistics();
+      const double frequency =
+          (2.0 * double(s.pair_events) + double(s.wall_events) - double(last_collisions)) / (27.0 * (t - last_time));
+      last_collisions = 2 * s.pair_events + s.wall_events;
+      last_time = t;
+      peak = std::max(peak, frequency);
+      std::printf("t = %.2f s: %.4g collisions per particle per second (%.3g per t_c)\n", t, frequency,
+                  frequency * 1e-3);
+    }
+    ASSERT_GT(peak * 1e-3, 5.0) << "the column must climb well past one collision per contact time";
+    // The monitor's windows are shorter than 0.25 s, so their peak is at least the coarse one:
+    // a limit at twice the coarse peak is the good side only if no short window goes above it,
+    // which the run itself decides. Bad side: a third of the coarse peak must fire.
+    options.collapse.max_collision_frequency = peak / 3.0;
+    EventDrivenEngine bad(settling_column(), options);
+    try {
+      bad.run_until(t_end);
+      ADD_FAILURE() << "a limit of a third of the peak frequency did not fire";
+    } catch (const MethodFailure& failure) {
+      EXPECT_EQ(failure.status, "lasting_contacts");
+      const std::string message = failure.what();
+      EXPECT_NE(message.find("soft_sphere"), std::string::npos) << message;
+      EXPECT_NE(message.find("max_collision_frequency"), std::string::npos) << message;
+      EXPECT_EQ(message.find("turn on the TC model"), std::string::npos) << message;
+    }
+    options.collapse.max_collision_frequency = 10.0 * peak;
+    EventDrivenEngine good(settling_column(), options);
+    EXPECT_NO_THROW(good.run_until(t_end));
+    EXPECT_EQ(good.statistics().collisions(), free_run.statistics().collisions())
+        << "the monitor changes nothing while it does not fire";
+  });
+}
+
+// (The default limit, 50 collisions within contact_time, is on in every TC run here: the
+// finishing runs above and below show that it leaves them alone.)
 TEST(Collapse, SettlingColumnFinishesWithTcModel) {
   test::expect_finishes(20, [] {
                 EventDrivenOptions options;

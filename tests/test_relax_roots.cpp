@@ -126,6 +126,44 @@ TEST(RelaxFlight, MatchesFineRk4Integration) {
   }
 }
 
+// The gas work booked for a relax flight (move_booking_gas_work) against the integral of the
+// gas force's power (a(v) - g) . v along a fine long-double RK4 integration of the same flight
+// (power integrated by Simpson's rule on the RK4 nodes: error ~h^4, far below the 1e-9 asked).
+// Reference scale: |a - g| |v| s, the work's natural size. The move itself must be bit for bit
+// displacement() and velocity(): the engine's trajectories do not change by booking.
+TEST(RelaxFlight, GasWorkIsTheIntegralOfTheGasForcesPower) {
+  using V = Eigen::Matrix<long double, 3, 1>;
+  Rng rng(17);
+  for (int k = 0; k < 40; ++k) {
+    const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
+    const RelaxFlight f{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng) +
+                                  log_uniform(rng, 0.1, 10.0) * unit(rng)};
+    const Vec3 v0 = log_uniform(rng, 0.01, 10.0) * unit(rng);
+    const double s = log_uniform(rng, 1e-5, 1e-2);
+    const int steps = 2 * int(std::ceil(std::max(1e3, 1e3 * rate * s)));
+    const long double h = (long double)s / steps;
+    const V drive = f.drive.cast<long double>(), g = kGravity.cast<long double>();
+    const long double k_rate = rate;
+    auto acc = [&](const V& w) { return (drive - k_rate * w).eval(); };
+    auto power = [&](const V& w) { return (acc(w) - g).dot(w); };
+    V v = v0.cast<long double>();
+    long double integral = power(v);
+    for (int i = 1; i <= steps; ++i) {
+      const V k1 = acc(v), k2 = acc(v + 0.5L * h * k1), k3 = acc(v + 0.5L * h * k2),
+              k4 = acc(v + h * k3);
+      v += h / 6.0L * (k1 + 2.0L * k2 + 2.0L * k3 + k4);
+      integral += (i == steps ? 1.0L : (i % 2 == 1 ? 4.0L : 2.0L)) * power(v);
+    }
+    integral *= h / 3.0L;
+    Vec3 r{0.1, -0.2, 0.3}, u = v0;
+    const double work = f.move_booking_gas_work(r, u, s, kGravity);
+    const double scale = (f.acceleration(v0) - kGravity).norm() * (v0.norm() + f.acceleration(v0).norm() * s) * s;
+    EXPECT_NEAR(work, (double)integral, 1e-9 * scale) << "case " << k;
+    EXPECT_EQ(r, Vec3(Vec3{0.1, -0.2, 0.3} + f.displacement(v0, s)));
+    EXPECT_EQ(u, f.velocity(v0, s));
+  }
+}
+
 // --- the brute-force oracle (contact_oracle.hpp) --------------------------------------------
 
 using test::Agreement;

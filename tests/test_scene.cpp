@@ -147,6 +147,28 @@ TEST(SceneErrors, WrongChoiceSuggestsClosest) {
                {"bad.toml:12", "collisions.collapse.model = \"tcc\"", "one of \"none\", \"tc\"", "did you mean \"tc\""});
 }
 
+// The lasting-contact limit: 50 collisions within the TC contact time by default; its keys.
+TEST(Scene, LastingContactLimit) {
+  const auto limit = [](const std::string& collapse) {
+    return parse_scene(kBase + "[collisions]\ncollapse = " + collapse + "\n", "good.toml")
+        .method.event_driven.collapse.collision_frequency_limit();
+  };
+  EXPECT_DOUBLE_EQ(limit("{ model = \"tc\", contact_time = 1e-4 }"), 50.0 / 1e-4);
+  EXPECT_DOUBLE_EQ(limit("{ model = \"tc\", contact_time = 1e-4, max_collisions_per_contact_time = 10 }"), 1e5);
+  EXPECT_DOUBLE_EQ(limit("{ model = \"tc\", contact_time = 1e-4, max_collisions_per_contact_time = 0 }"), 0.0);
+  EXPECT_DOUBLE_EQ(limit("{ model = \"tc\", contact_time = 1e-4, max_collision_frequency = 3e4 }"), 3e4);
+  EXPECT_DOUBLE_EQ(limit("{ elastic_below_speed = 0.01 }"), 0.0);
+  EXPECT_DOUBLE_EQ(limit("{ elastic_below_speed = 0.01, max_collision_frequency = 2e5 }"), 2e5);
+}
+
+TEST(SceneErrors, LastingContactLimitKeys) {
+  expect_error(kBase + "[collisions]\ncollapse = { max_collisions_per_contact_time = 20 }\n",
+               {"bad.toml:12", "collisions.collapse.max_collisions_per_contact_time", "only used with model = \"tc\"",
+                "max_collision_frequency"});
+  expect_error(kBase + "[collisions]\ncollapse = { model = \"tc\", contact_time = 1e-4, max_collision_frequency = -1 }\n",
+               {"bad.toml:12", "collisions.collapse.max_collision_frequency = -1", "[0, inf)"});
+}
+
 // [method] selects the collision method by name; the default is the event-driven engine, and a
 // name that is not a method is refused with the file, line, key and the allowed names.
 TEST(Scene, MethodKindDefaultsToEventDriven) {

@@ -104,6 +104,14 @@ void EventDrivenEngine::cross_cell(std::int32_t i, int face) {
 }
 
 void EventDrivenEngine::book_collision(std::int32_t i, double t, std::int32_t partner_code) {
+  if (rate_.due(statistics_.pair_events, statistics_.wall_events)) {
+    const double span = t - rate_.start_time;
+    const double frequency =
+        rate_.measure(statistics_.pair_events, statistics_.wall_events, t, agenda_.size());
+    if (frequency > rate_.limit)
+      throw MethodFailure("lasting_contacts",
+                          lasting_contact_diagnostic(t, frequency, span, options_.collapse));
+  }
   StallRecord& record = agenda_[i].stall;
   if (!stall_.book(record, t)) return;
   const ParticleStore& p = system_.particles;
@@ -113,7 +121,9 @@ void EventDrivenEngine::book_collision(std::int32_t i, double t, std::int32_t pa
   std::vector<std::uint64_t> ids{p.id[i]};
   if (partner_code >= 0) ids.push_back(p.id[partner_code]);
   throw InelasticCollapse(
-      collapse_diagnostic(t, describe(i), record.count, t - record.window_start, partner), ids);
+      collapse_diagnostic(t, describe(i), record.count, t - record.window_start, partner,
+                          options_.collapse),
+      ids);
 }
 
 void EventDrivenEngine::check_pair_invariants(std::int32_t i, std::int32_t j,

@@ -78,6 +78,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
         std::sqrt(mean_square / n), system_.flight.gravity.norm());
   }
   time_ = last_particle_event_ = n > 0 ? *std::max_element(p.clock.begin(), p.clock.end()) : 0.0;
+  start_rate_monitor(time_);
   hot_.resize(n);
   body_.resize(n);
   counter_.assign(n, 0);
@@ -121,8 +122,16 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
   time_ = state.time;
   last_particle_event_ = state.last_particle_event;
   statistics_ = std::move(state.statistics);
+  gas_work_ = state.gas_work;
   stall_.limit = options_.collapse.stall_collisions;
   stall_.window = state.stall_window;
+  start_rate_monitor(state.rate_start_time);
+  if (state.rate_start_time >= 0.0) {
+    rate_.start_pairs = state.rate_start_pairs;
+    rate_.start_walls = state.rate_start_walls;
+  } else {  // a checkpoint written before the monitor: its window starts now
+    rate_.start_time = time_;
+  }
   restored_action_times_ = std::move(state.action_times);
   restored_ = true;
   hot_.resize(n);
@@ -132,6 +141,14 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
     body_[i].last_collision = state.last_collision[i];
     load_records(static_cast<std::int32_t>(i));
   }
+}
+
+void EventDrivenEngine::start_rate_monitor(double t) {
+  rate_.limit = options_.collapse.collision_frequency_limit();
+  rate_.window = std::max<std::uint64_t>(10 * agenda_.size(), 1000);
+  rate_.start_pairs = statistics_.pair_events;
+  rate_.start_walls = statistics_.wall_events;
+  rate_.start_time = t;
 }
 
 void EventDrivenEngine::copy_state_to(ParticleStore& p) const {
@@ -168,6 +185,10 @@ EngineState EventDrivenEngine::state() const {
   s.last_particle_event = last_particle_event_;
   s.statistics = statistics_;
   s.stall_window = stall_.window;
+  s.gas_work = gas_work_;
+  s.rate_start_pairs = rate_.start_pairs;
+  s.rate_start_walls = rate_.start_walls;
+  s.rate_start_time = rate_.start_time;
   for (const PeriodicAction& a : actions_) s.action_times.emplace_back(a.name, a.next_time);
   return s;
 }
@@ -238,10 +259,14 @@ void EventDrivenEngine::fire_action(std::size_t k) {
   for (std::size_t i = 0; i < n; ++i) advance<Flight>(static_cast<std::int32_t>(i), time_);
   last_particle_event_ = time_;
   store_state();
+  // A synchronising action is the gas's hook (the fluid step, a drag kick): the kinetic energy
+  // (and spin energy) it gives the particles is work done by the gas.
+  const double kinetic_before = kinetic_energy(p);
   GlobalStep step{time_, p, flights_};
   action.step(step);
   if (flights_.size() != n) throw std::logic_error(action.name + " changed the number of flights");
   hold_fixed_particles();
+  gas_work_ += kinetic_energy(p) - kinetic_before;
   action.next_time += action.interval;
   calendar_.set(end_slot_ + 1 + k, action.next_time);
   horizon_ = next_synchronisation();
@@ -316,6 +341,13 @@ Vec3 EventDrivenEngine::velocity(std::size_t i) const {
   });
 }
 
+double EventDrivenEngine::kinetic_energy(const ParticleStore& p) {
+  double sum = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    sum += 0.5 * (p.mass[i] * p.velocity[i].squaredNorm() + p.inertia[i] * p.spin[i].squaredNorm());
+  return sum;
+}
+
 Energies EventDrivenEngine::energies() const {
   Energies e;
   const ParticleStore& p = system_.particles;
@@ -325,6 +357,17 @@ Energies EventDrivenEngine::energies() const {
     e.potential -= p.mass[i] * system_.flight.gravity.dot(position(i));
   }
   e.dissipated = statistics_.dissipated_energy;
+  e.gas_work = gas_work_;
+  // The gas's work on each relax flight from the particle's clock to now, not yet booked.
+  with_flight([&](auto flight) {
+    using Flight = decltype(flight);
+    if constexpr (Flight::kGasForces)
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        HotState m = hot_[i];
+        e.gas_work += body_[i].mass * Flight::move_booking_gas_work(m, time_ - m.clock, system_.flight,
+                                                                    flights_[i]);
+      }
+  });
   return e;
 }
 
@@ -342,7 +385,8 @@ void EventDrivenEngine::process_particle_event(std::int32_t i) {
   // Stall detector, second half: events that never move time on (the first half, in
   // book_collision, counts one particle's collisions in a short window).
   if (stall_.stuck(event.time, last_particle_event_, agenda_.size()))
-    throw InelasticCollapse(stuck_diagnostic(event.time, stall_.events_without_progress, describe(i)),
+    throw InelasticCollapse(
+        stuck_diagnostic(event.time, stall_.events_without_progress, describe(i), options_.collapse),
                             {system_.particles.id[i]});
   switch (event.kind) {
     case EventKind::Pair:

@@ -150,7 +150,10 @@ class EventDrivenEngine final : public CollisionMethod {
     HotState& m = hot_[i];
     const double dt = t - m.clock;
     if (dt == 0.0) return;
-    Flight::move(m, dt, system_.flight, flights_[i]);
+    if constexpr (Flight::kGasForces)
+      gas_work_ += body_[i].mass * Flight::move_booking_gas_work(m, dt, system_.flight, flights_[i]);
+    else
+      Flight::move(m, dt, system_.flight, flights_[i]);
     m.clock = t;
   }
   /// Predicts all of particle i's events for the flights of this run.
@@ -192,6 +195,11 @@ class EventDrivenEngine final : public CollisionMethod {
 
   /// Puts particle i's earlier event (collision or crossing) in the calendar.
   void schedule(std::int32_t i);
+  /// Sets the lasting-contact monitor's limit and window from the options and starts its
+  /// window at time t (s) with the current counts.
+  void start_rate_monitor(double t);
+  /// sum (m v^2 + I w^2) / 2 of the stored velocities and spins, J.
+  static double kinetic_energy(const ParticleStore& p);
   /// Fixed particles: at rest, no spin, no force (after anything that may have set them).
   void hold_fixed_particles();
   /// The earliest next time of the synchronising actions (kNever if none), s.
@@ -226,16 +234,18 @@ class EventDrivenEngine final : public CollisionMethod {
     double inverse_mass = 0;          ///< 1 / m_i, 1/kg.
     double inverse_inertia = 0;       ///< 1 / I_i, 1/(kg m^2).
     double last_collision = -kNever;  ///< Time of the last collision, s (TC model).
+    double mass = 0;                  ///< m_i, kg (books the gas work of relax flights).
     std::uint32_t species = 0;        ///< Index into the species list.
     bool fixed = false;               ///< Of a fixed species: infinite mass in collisions.
   };
+  static_assert(sizeof(Body) == 64, "one cache line");
   /// Particle i's motion and body from the particle store (at the start, and after a step);
   /// its last collision time is kept as it is.
   void load_records(std::int32_t i) {
     const ParticleStore& p = system_.particles;
     hot_[i] = HotState{p.position[i], p.clock[i], p.velocity[i], p.radius[i]};
     const double last = body_[i].last_collision;
-    body_[i] = Body{p.spin[i], 1.0 / p.mass[i], 1.0 / p.inertia[i], last, p.species[i],
+    body_[i] = Body{p.spin[i], 1.0 / p.mass[i], 1.0 / p.inertia[i], last, p.mass[i], p.species[i],
                     system_.species[p.species[i]].fixed};
   }
   /// Writes every particle's changing state from the records into `p`.
@@ -269,7 +279,11 @@ class EventDrivenEngine final : public CollisionMethod {
   double last_particle_event_ = 0;       ///< Time of the last processed particle event, s.
   RunStatistics statistics_;
   StallDetector stall_;
+  RateMonitor rate_;
   std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.
+  /// Work done on the particles by the gas since the start, J: by the gas forces of relax
+  /// flights up to each particle's clock, and by the synchronising actions (drag kicks).
+  double gas_work_ = 0;
   double horizon_ = kNever;                    ///< Relax: no prediction reaches past this, s.
   bool restored_ = false;                      ///< Built from an EngineState (its events stand).
   std::vector<std::pair<std::string, double>> restored_action_times_;

@@ -35,11 +35,16 @@ struct EngineState {
   std::vector<double> stall_window_start;           ///< s.
   std::vector<std::uint32_t> stall_count;
   double stall_window = 0;                          ///< s.
+  double gas_work = 0;                              ///< Gas work booked so far, J.
+  std::uint64_t rate_start_pairs = 0;               ///< Lasting-contact window: pair count,
+  std::uint64_t rate_start_walls = 0;               ///< wall count,
+  double rate_start_time = -1;                      ///< and start, s (< 0: not saved).
   std::vector<std::pair<std::string, double>> action_times;  ///< Next time of each action, s.
 };
 
 /// Writes `state` into `group`. Layout (doubles as native doubles: bit for bit): attributes
-/// method = "event_driven", time, last_particle_event, stall_window; particles/ (position,
+/// method = "event_driven", time, last_particle_event, stall_window, gas_work,
+/// rate_start_pairs, rate_start_walls, rate_start_time; particles/ (position,
 /// velocity, spin (N x 3), clock, radius, mass, inertia, species, id, and the engine's
 /// event_counter and last_collision), cells (N x 3), cell_list_places, events/ and crossings/
 /// (each: time, partner, partner_counter, kind), flights/ (rate, drive (N x 3)), statistics/

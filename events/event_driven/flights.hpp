@@ -14,6 +14,7 @@ namespace carom {
 /// Ballistic flights without gravity: straight lines, r(s) = r0 + v0 s.
 struct StraightFlights {
   static constexpr bool kGravity = false;
+  static constexpr bool kGasForces = false;  ///< No gas force acts in flight.
   /// Moves state m on by dt (s).
   static void move(PairState& m, double dt, const BallisticFlight&, const RelaxFlight&) {
     m.position += dt * m.velocity;
@@ -32,6 +33,7 @@ struct StraightFlights {
 /// each other, so pair contact is a quadratic).
 struct GravityFlights {
   static constexpr bool kGravity = true;
+  static constexpr bool kGasForces = false;
   static void move(PairState& m, double dt, const BallisticFlight& f, const RelaxFlight&) {
     m.position = f.position(m.position, m.velocity, dt);
     m.velocity = f.velocity(m.velocity, dt);
@@ -48,9 +50,15 @@ struct GravityFlights {
 /// synchronising action, beyond which nothing is predicted.
 struct RelaxFlights {
   static constexpr bool kGravity = true;
+  static constexpr bool kGasForces = true;  ///< The gas works on the particles in flight.
   static void move(PairState& m, double dt, const BallisticFlight&, const RelaxFlight& f) {
     m.position += f.displacement(m.velocity, dt);
     m.velocity = f.velocity(m.velocity, dt);
+  }
+  /// move(), bit for bit, returning the gas forces' work per unit mass on the way, J/kg.
+  static double move_booking_gas_work(PairState& m, double dt, const BallisticFlight& b,
+                                      const RelaxFlight& f) {
+    return f.move_booking_gas_work(m.position, m.velocity, dt, b.gravity);
   }
   static Vec3 position_after(const PairState& m, double dt, const BallisticFlight&, const RelaxFlight& f) {
     return m.position + f.displacement(m.velocity, dt);

@@ -49,11 +49,51 @@ struct StallDetector {
   }
 };
 
+/// The third test, lasting contacts: the collision frequency per particle, averaged over all
+/// particles over a window of `window` collisions (pair and wall events), above `limit`. Hard
+/// spheres in lasting contact (a packed bed under the TC model, a plug pinned under a lid)
+/// collide ever faster as their gaps close, without bound; no per-particle window catches that
+/// while time still moves on.
+struct RateMonitor {
+  double limit = 0;                  ///< Collisions per particle per second; 0: off.
+  std::uint64_t window = 0;          ///< Collision events per measurement.
+  std::uint64_t start_pairs = 0;     ///< Pair collisions at the window's start.
+  std::uint64_t start_walls = 0;     ///< Wall collisions at the window's start.
+  double start_time = 0;             ///< s.
+
+  /// Whether a measurement is due after `pairs` + `walls` collision events.
+  bool due(std::uint64_t pairs, std::uint64_t walls) const {
+    return limit > 0.0 && pairs + walls - start_pairs - start_walls >= window;
+  }
+  /// The mean collision frequency per particle of `particles` over the window ending at time t
+  /// (s) with these counts, 1/s; starts the next window.
+  double measure(std::uint64_t pairs, std::uint64_t walls, double t, std::size_t particles) {
+    const double collisions = 2.0 * double(pairs - start_pairs) + double(walls - start_walls);
+    const double span = t - start_time;
+    start_pairs = pairs;
+    start_walls = walls;
+    start_time = t;
+    // A window without time moving on is the stuck test's case (StallDetector::stuck).
+    return span > 0.0 ? collisions / (double(particles) * span) : 0.0;
+  }
+};
+
+/// The diagnostic of a run caught by RateMonitor: the measured frequency, the limit and where it
+/// comes from, and the remedies.
+std::string lasting_contact_diagnostic(double t, double frequency, double span,
+                                       const CollapseOptions& options);
+
+/// The remedies for a run caught by the stall detector, as they apply to `options`: the TC
+/// model and the low-speed rule are advised only where they are off (where they are on, what
+/// changing their setting does), then the restitution and the soft-sphere method.
+std::string collapse_remedy(const CollapseOptions& options);
 /// The diagnostic of a particle caught by StallDetector::book: who, where, with whom, and the
 /// remedies. `particle`, `partner`: descriptions ("particle 12 (species glass, at x y z m)").
 std::string collapse_diagnostic(double t, const std::string& particle, std::uint32_t count,
-                                double window, const std::string& partner);
+                                double window, const std::string& partner,
+                                const CollapseOptions& options);
 /// The diagnostic of a run caught by StallDetector::stuck.
-std::string stuck_diagnostic(double t, std::uint64_t events, const std::string& particle);
+std::string stuck_diagnostic(double t, std::uint64_t events, const std::string& particle,
+                             const CollapseOptions& options);
 
 }  // namespace carom

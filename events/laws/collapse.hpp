@@ -19,6 +19,20 @@ struct CollapseOptions {
   /// Simulated window for the stall count, s. <= 0: 1e-9 of the system's collision time
   /// scale (smallest diameter over a reference speed), chosen when the run starts.
   double stall_window = 0.0;
+  /// Lasting contacts: more collisions per particle within one TC contact_time than this,
+  /// averaged over all particles over a window of collisions, stop the run (status
+  /// "lasting_contacts"). Used with the TC model only (its contact_time is the time scale);
+  /// 0 turns it off.
+  double max_collisions_per_contact_time = 50.0;
+  /// The same limit as a collision frequency per particle, 1/s, for any scene (with or without
+  /// the TC model). < 0: max_collisions_per_contact_time / contact_time with the TC model, off
+  /// without it; 0: off.
+  double max_collision_frequency = -1.0;
+  /// The collision-frequency limit this run uses, 1/s (0: none), as documented above.
+  double collision_frequency_limit() const {
+    if (max_collision_frequency >= 0.0) return max_collision_frequency;
+    return contact_time > 0.0 ? max_collisions_per_contact_time / contact_time : 0.0;
+  }
 };
 
 /// Thrown when the stall detector fires. The simulator is left in a consistent state.

@@ -4,7 +4,8 @@
     /usr/bin/python3 scenarios/plots/plot.py RUN.h5 [--out DIR] [--snapshot K] [--axes xy] [--slab W]
 
 Writes, as 150 dpi PNGs named after the run file:
-  RUN_energies.png         kinetic (translational, rotational), potential, dissipated and total
+  RUN_energies.png         kinetic (translational, rotational), potential, elastic, dissipated,
+                           the gas's work and the total
                            energy against time (/timeseries);
   RUN_collision_rates.png  pair collisions per unit time for every species pair, measured over
                            each sample interval, with the Enskog prediction when the run is a
@@ -107,12 +108,16 @@ def plot_energies(run, path):
         curves = [("kinetic_translational", "kinetic, translational", "-"),
                   ("kinetic_rotational", "kinetic, rotational", "-"),
                   ("potential", "potential", "-"),
+                  ("elastic", "elastic (soft-sphere contacts)", "-"),
                   ("dissipated", "dissipated", "--"),
-                  ("total_energy", "total", ":")]
+                  ("gas_work", "work done by the gas", "-."),
+                  ("total_energy", "total (kinetic + potential + elastic\n+ dissipated - gas work)", ":")]
         scale = np.max(np.abs(series["total_energy"][()])) or 1.0
         for k, (name, label, style) in enumerate(curves):
+            if name not in series:
+                continue  # run files written before the column existed
             values = series[name][()]
-            if name in ("kinetic_rotational", "potential") and \
+            if name in ("kinetic_rotational", "potential", "elastic", "gas_work") and \
                     np.max(np.abs(values)) < 1e-12 * scale:
                 continue  # zero up to round-off (smooth spheres, no gravity): only clutter
             ax.plot(t, values, style, color=COLOURS[k], lw=1.6 if name == "total_energy" else 1.2,

@@ -95,6 +95,18 @@ void read_collisions(TableReader& root, Scene& scene) {
     collapse.stall_collisions = static_cast<std::uint64_t>(
         t->integer("stall_collisions", 1000, 1, std::numeric_limits<std::int64_t>::max(), "collisions of one particle within stall_window that mean collapse"));
     collapse.stall_window = t->number("stall_window", 0.0, Range::non_negative("window of the stall detector, s (0: automatic)"));
+    if (model == "tc")
+      collapse.max_collisions_per_contact_time = t->number(
+          "max_collisions_per_contact_time", collapse.max_collisions_per_contact_time,
+          Range::non_negative("collisions per particle within one contact_time that mean lasting contacts (0: off)"));
+    else if (t->has("max_collisions_per_contact_time"))
+      t->fail("max_collisions_per_contact_time",
+              "is only used with model = \"tc\" (its contact_time is the time scale); without it, set "
+              "max_collision_frequency");
+    if (auto limit = t->optional_number(
+            "max_collision_frequency",
+            Range::non_negative("collisions per particle per second that mean lasting contacts, 1/s (0: off)")))
+      collapse.max_collision_frequency = *limit;
     t->finish();
   }
   c->finish();

@@ -5,18 +5,27 @@
 // Every number of the chart's table is recomputed here from the cases' own summary.json and
 // result.json; the report must name the cheapest variant within the tolerance found the same
 // way. Then: a second run changes nothing, the figures are drawn, and mistakes are reported.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli_support.hpp"
+
+extern char** environ;
 
 namespace {
 
@@ -39,7 +48,7 @@ seeds = [1, 2, 3]
 reference = "event-driven"
 
 [[chart.observable]]
-key = "collision_rate_per_particle.a-a"
+key = "analysis.collision_frequency.a-a"
 tolerance = 0.05
 
 [[chart.observable]]
@@ -113,7 +122,7 @@ TEST_F(Chart, EndToEndOnAGasKineticTheoryKnows) {
 
   // The per-seed numbers, straight from the cases' files.
   const std::vector<std::string> names = {"event-driven", "mc enskog", "mc ideal", "soft"};
-  const std::vector<std::string> keys = {"collision_rate_per_particle.a-a", "mean_temperature"};
+  const std::vector<std::string> keys = {"analysis.collision_frequency.a-a", "mean_temperature"};
   std::vector<std::vector<double>> cost(4);
   std::vector<std::vector<std::vector<double>>> values(4, std::vector<std::vector<double>>(2));
   for (int k = 0; k < 12; ++k) {
@@ -129,7 +138,7 @@ TEST_F(Chart, EndToEndOnAGasKineticTheoryKnows) {
     EXPECT_LE(cpu, result["elapsed_seconds"].get<double>() * 1.05 + 0.02) << k;
     EXPECT_EQ(summary["end_time"].get<double>(), 20.0);
     cost[k / 3].push_back(cpu / 20.0);
-    values[k / 3][0].push_back(summary["collision_rate_per_particle"]["a-a"].get<double>());
+    values[k / 3][0].push_back(summary["analysis"]["collision_frequency"]["a-a"].get<double>());
     values[k / 3][1].push_back(summary["mean_temperature"].get<double>());
   }
 
@@ -215,7 +224,7 @@ TEST_F(Chart, EndToEndOnAGasKineticTheoryKnows) {
     const std::string command = "/usr/bin/python3 " + std::string(CAROM_PLOTS_DIR) +
                                 "/chart_plot.py '" + out.string() + "' > /dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0);
-    EXPECT_GT(fs::file_size(out / "pareto_collision_rate_per_particle.a-a.png"), 10000u);
+    EXPECT_GT(fs::file_size(out / "pareto_analysis.collision_frequency.a-a.png"), 10000u);
     EXPECT_GT(fs::file_size(out / "pareto_mean_temperature.png"), 10000u);
   }
 }
@@ -282,6 +291,80 @@ set = { "method.kind" = "monte_carlo" }
   scene("typo.toml", fixed);
   EXPECT_EQ(carom("chart typo.toml"), 0) << out_;
   EXPECT_NE(out_.find("4 already done, 0 to run"), std::string::npos) << out_;
+}
+
+// SIGINT to a chart while a soft-sphere case runs: exit 130, the case checkpointed. The same
+// command continues it (the sweep's resume); its cost is the CPU time of both attempts over the
+// whole simulated time, and its observable (the analysis covers t = 0 to the end) is bit for
+// bit that of a chart that was never interrupted.
+TEST_F(Chart, AnInterruptedChartResumesAndCountsEveryAttempt) {
+  scene("gas.toml", kGas);
+  scene("long.toml", R"([chart]
+scene = "gas.toml"
+seeds = [1, 2]
+reference = "ed"
+set = { "time.end" = 60.0, "output.checkpoint_every" = 20.0 }
+
+[[chart.observable]]
+key = "analysis.collision_frequency.a-a"
+tolerance = 0.05
+
+[[chart.variant]]
+name = "ed"
+
+[[chart.variant]]
+name = "soft"
+set = { "method.kind" = "soft_sphere", "soft_sphere.contact_model" = "linear", "soft_sphere.contact_time" = 0.02 }
+)");
+  std::vector<std::string> args{kCarom, "chart", "long.toml"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, (dir_ / "first.txt").c_str(),
+                                   O_WRONLY | O_CREAT, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir_);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, kCarom.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  fs::current_path(cwd);
+  posix_spawn_file_actions_destroy(&actions);
+  const fs::path out = dir_ / "long.out";
+  const fs::path soft = out / "cases" / "0002";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(soft / "run.h5") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // in its run loop (about 1 s long)
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 130) << read(dir_ / "first.txt");
+  const Json stopped = Json::parse(read(soft / "result.json"));
+  ASSERT_EQ(stopped["status"], "interrupted") << read(dir_ / "first.txt");
+  const double first_cpu = stopped["cpu_seconds"].get<double>();
+  EXPECT_GT(first_cpu, 0.0);
+  EXPECT_TRUE(fs::exists(out / "chart.csv")) << "the tables are written on interruption too";
+
+  ASSERT_EQ(carom("chart long.toml"), 0) << out_;
+  EXPECT_NE(out_.find("1 to resume"), std::string::npos) << out_;
+  const Json done = Json::parse(read(soft / "result.json"));
+  EXPECT_EQ(done["attempts"], 2);
+  const double total_cpu = done["cpu_seconds"].get<double>();
+  EXPECT_GT(total_cpu, first_cpu);
+  const auto rows = read_csv(out / "chart_cases.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[0][4], "cpu_seconds");
+  EXPECT_EQ(rows[0][6], "cost");
+  EXPECT_NEAR(number(rows[3][4]), total_cpu, 1e-12);
+  EXPECT_NEAR(number(rows[3][6]), total_cpu / 60.0, 1e-12);
+
+  ASSERT_EQ(carom("chart long.toml --out whole --quiet"), 0) << out_;
+  const auto whole = read_csv(dir_ / "whole" / "chart_cases.csv");
+  ASSERT_EQ(whole.size(), 5u);
+  for (std::size_t r = 1; r < 5; ++r) EXPECT_EQ(rows[r][7], whole[r][7]) << "case " << r - 1;
 }
 
 }  // namespace

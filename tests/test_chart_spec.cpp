@@ -106,7 +106,9 @@ TEST_F(ChartFile, MistakesNameFileLineKeyAndWhatIsAllowed) {
   };
   const std::string f = "chart.toml";
   const std::vector<Case> cases = {
-      {"[sweep]\nscene = \"gas.toml\"\n", f + ":1", "unknown key 'sweep'",
+      {"[sweep]\nscene = \"gas.toml\"\n", f + ":1", "this is a sweep file", "carom sweep"},
+      {"[domain]\nmin = [0, 0, 0]\n", f, "no [chart] table", "carom run"},
+      {kHead + kObservable + kVariants + "[extra]\nx = 1\n", f + ":17", "unknown key 'extra'",
        "known keys here: chart"},
       {kHead + "seed = 3\n" + kObservable + kVariants, f + ":5", "chart.seed", "chart.seeds"},
       {"[chart]\nscene = \"gas.toml\"\nseeds = [1]\nreference = \"exact\"\n" + kObservable +
@@ -149,8 +151,8 @@ TEST_F(ChartFile, MistakesNameFileLineKeyAndWhatIsAllowed) {
       {kHead + kObservable + "[[chart.variant]]\nname = \"exact\"\n", f, "[[chart.variant]]",
        "at least two"},
       {kHead + kObservable + kVariants +
-           "[[chart.variant]]\nname = \"a/b\"\nset = { \"time.end\" = 1.0 }\n",
-       f + ":18", "chart.variant[2].name", "without '/'"},
+           "[[chart.variant]]\nname = \"a|b\"\nset = { \"time.end\" = 1.0 }\n",
+       f + ":18", "chart.variant[2].name", "without '|'"},
       {kHead + kObservable + kVariants + "[[chart.variant]]\nname = \"x\"\nset = 3\n", f + ":19",
        "chart.variant[2].set = 3", "scene changes as for --set"},
   };

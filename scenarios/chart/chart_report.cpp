@@ -271,6 +271,8 @@ std::string chart_report(const ChartSpec& chart, const ChartTable& table) {
              << rounded(ref.cost.mean) << ")";
       }
       md << ".";
+      if (ref.cost.mean < row.cost.mean)
+        md << " The reference itself is cheaper than every variant within the tolerance.";
       if (std::isfinite(r.error.uncertainty) && r.error.uncertainty > o.tolerance)
         md << " Its uncertainty exceeds the tolerance: more seeds would be needed to be sure.";
       md << "\n";

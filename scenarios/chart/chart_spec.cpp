@@ -83,9 +83,9 @@ ChartVariant read_variant(TableReader& reader, const toml::table& raw) {
   ChartVariant v;
   v.name = reader.required_string("name");
   v.where = reader.where_key("name");
-  if (v.name.empty() || v.name.find_first_of("\n\r\t/") != std::string::npos)
+  if (v.name.empty() || v.name.find_first_of("\n\r\t|") != std::string::npos)
     reader.fail("name",
-                "is not a variant name (allowed: a non-empty label without '/', tabs or line "
+                "is not a variant name (allowed: a non-empty label without '|', tabs or line "
                 "breaks, e.g. \"soft dt=1e-3\")");
   read_set(reader, raw, v.sets, v.origins);
   return v;
@@ -107,14 +107,22 @@ ChartSpec read_chart(const std::string& path) {
                      std::to_string(e.source().begin.column) +
                      ": not valid TOML: " + std::string(e.description()));
   }
-  TableReader top(root, path, "");
   const toml::table* raw = root.get_as<toml::table>("chart");
-  std::optional<TableReader> chart = top.table("chart");
-  top.finish();
-  if (!chart || raw == nullptr)
+  if (raw == nullptr) {
+    if (const toml::table* sweep = root.get_as<toml::table>("sweep"))
+      throw SceneError(path + ":" + std::to_string(sweep->source().begin.line) +
+                       ": this is a sweep file ([sweep]), not a chart: run it with `carom sweep " +
+                       path + "`");
     throw SceneError(path +
                      ": no [chart] table; a chart file starts with [chart] and scene = "
-                     "\"SCENE.toml\" (see scenarios/chart/CHARTS.md)");
+                     "\"SCENE.toml\" (see scenarios/chart/CHARTS.md)" +
+                     (root.contains("domain")
+                          ? "; this looks like a scene: run it with `carom run " + path + "`"
+                          : std::string()));
+  }
+  TableReader top(root, path, "");
+  std::optional<TableReader> chart = top.table("chart");
+  top.finish();
   chart->allow({"scene", "out", "seeds", "reference", "set", "observable", "variant"});
   chart->finish();  // a misspelt key first: what it stood for is then no surprise
 

@@ -24,6 +24,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402,F401
 import numpy as np  # noqa: E402
 
 
@@ -60,6 +61,25 @@ def read(path):
     return chart
 
 
+def place_labels(fig, axes, names, xs, ys):
+    """Each label beside its point: right-above, right-below, left-above or left-below, the
+    first that overlaps no label placed before (in order of cost)."""
+    renderer = fig.canvas.get_renderer()
+    placed = []
+    for name, x, y in sorted(zip(names, xs, ys), key=lambda t: t[1]):
+        for dx, dy, ha in ((6, 5, "left"), (6, -13, "left"), (-6, 5, "right"), (-6, -13, "right")):
+            label = axes.annotate(name, (x, y), textcoords="offset points", xytext=(dx, dy),
+                                  ha=ha, fontsize=8)
+            box = label.get_window_extent(renderer).expanded(1.05, 1.1)
+            if not any(box.overlaps(other) for other in placed):
+                break
+            label.remove()
+        else:
+            label = axes.annotate(name, (x, y), textcoords="offset points", xytext=(6, 5), fontsize=8)
+            box = label.get_window_extent(renderer)
+        placed.append(box)
+
+
 def plot(chart, name, obs, path):
     relative = obs["measure"] == "relative"
     scale = 100.0 if relative else 1.0
@@ -72,7 +92,7 @@ def plot(chart, name, obs, path):
              if v != ref and np.isfinite(cost[v]) and cost[v] > 0 and np.isfinite(error[v]) and error[v] > 0]
     left_out = [chart["names"][v] for v in range(len(cost)) if v != ref and v not in shown]
 
-    fig, axes = plt.subplots(figsize=(7.5, 5.2))
+    fig, axes = plt.subplots(figsize=(10, 5.2))
     # The front: non-dominated variants (the reference excepted: its error is 0 by definition).
     front = sorted((v for v in shown if obs["pareto"][v]), key=lambda v: cost[v])
     if len(front) > 1:
@@ -96,16 +116,18 @@ def plot(chart, name, obs, path):
                           fmt="v" if noisy else "o", ms=7, capsize=3, lw=1, zorder=3,
                           mfc="white" if noisy else style["mfc"], color=style["color"],
                           label=label + (" (error within noise)" if noisy else ""))
-    for v in shown:
-        axes.annotate(chart["names"][v], (cost[v], error[v]), textcoords="offset points", xytext=(6, 5),
-                      fontsize=8)
     ref_on_front = bool(obs["pareto"][ref])
     axes.axvline(cost[ref], color="k", ls="--", lw=1,
                  label=f"reference: {chart['reference']} ({cost[ref]:.3g} CPU s/s, error 0"
                        + (", on the front)" if ref_on_front else ")"))
     ref_noise = obs["noise"][ref] * scale
     if np.isfinite(ref_noise) and ref_noise > 0:
-        axes.axhline(ref_noise, color="k", ls=":", lw=1, label=f"reference's standard error ({ref_noise:.2g}{unit.strip(' ()')})")
+        text = f"reference's standard error ({ref_noise:.2g}{unit.strip(' ()')}"
+        drawn = error[shown] if shown else np.array([ref_noise])
+        if ref_noise >= drawn.min() / 30:
+            axes.axhline(ref_noise, color="k", ls=":", lw=1, label=text + ")")
+        else:  # far below every error: say it rather than stretch the axis over decades
+            axes.plot([], [], " ", label=text + ", below the axis)")
     axes.axhline(obs["tolerance"] * scale, color="tab:red", ls="--", lw=1,
                  label=f"tolerance ({obs['tolerance'] * scale:.3g}{unit.strip(' ()')})")
     axes.set_xscale("log")
@@ -117,6 +139,8 @@ def plot(chart, name, obs, path):
         axes.plot([cost[last], cost[ref], cost[ref]], [error[last], error[last], bottom], ":",
                   color="tab:blue", lw=1.5, alpha=0.6, zorder=1)
         axes.set_ylim(bottom=bottom)
+    for axis in (axes.xaxis, axes.yaxis):  # label 2x and 5x ticks too when few decades show
+        axis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(minor_thresholds=(2, 0.5)))
     axes.set_xlabel("cost: CPU seconds per simulated second")
     axes.set_ylabel(f"|{'relative ' if relative else ''}error| of {obs['key']}{unit}")
     title = f"{os.path.basename(chart['chart_file'])}: {obs['key']}"
@@ -124,8 +148,9 @@ def plot(chart, name, obs, path):
         title += "\nnot drawn (no cost or zero error): " + ", ".join(left_out)
     axes.set_title(title, fontsize=10)
     axes.grid(True, which="both", alpha=0.25)
-    axes.legend(fontsize=7, loc="best")
+    axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     fig.tight_layout()
+    place_labels(fig, axes, [chart["names"][v] for v in shown], cost[shown], error[shown])
     fig.savefig(path, dpi=120)
     plt.close(fig)
 

@@ -139,8 +139,10 @@ def plot(chart, name, obs, path):
         axes.plot([cost[last], cost[ref], cost[ref]], [error[last], error[last], bottom], ":",
                   color="tab:blue", lw=1.5, alpha=0.6, zorder=1)
         axes.set_ylim(bottom=bottom)
-    for axis in (axes.xaxis, axes.yaxis):  # label 2x and 5x ticks too when few decades show
-        axis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(minor_thresholds=(2, 0.5)))
+    for axis, limits in ((axes.xaxis, axes.get_xlim()), (axes.yaxis, axes.get_ylim())):
+        if np.log10(limits[1] / limits[0]) < 1.5:  # few decades: label the 2x and 5x ticks too
+            axis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2.0, 5.0)))
+            axis.set_minor_formatter(matplotlib.ticker.FuncFormatter(lambda x, _: f"{x:g}"))
     axes.set_xlabel("cost: CPU seconds per simulated second")
     axes.set_ylabel(f"|{'relative ' if relative else ''}error| of {obs['key']}{unit}")
     title = f"{os.path.basename(chart['chart_file'])}: {obs['key']}"

@@ -367,4 +367,51 @@ set = { "method.kind" = "soft_sphere", "soft_sphere.contact_model" = "linear", "
   for (std::size_t r = 1; r < 5; ++r) EXPECT_EQ(rows[r][7], whole[r][7]) << "case " << r - 1;
 }
 
+// mpirun -n 2: the ranks share the cases (the sweep's own MPI test checks how), and only the
+// first process writes the chart's tables and prints its conclusions, once MPI is down: the
+// observables are bit for bit those of a local chart.
+TEST_F(Chart, UnderMpirunTheFirstRankWritesTheSameTables) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun";
+#ifndef CAROM_TEST_HAVE_MPI
+  GTEST_SKIP() << "this carom has no MPI";
+#endif
+  scene("gas.toml", kGas);
+  scene("small.toml", R"([chart]
+scene = "gas.toml"
+seeds = [1, 2]
+reference = "ed"
+set = { "time.end" = 2.0 }
+
+[[chart.observable]]
+key = "analysis.collision_frequency.a-a"
+tolerance = 0.05
+
+[[chart.variant]]
+name = "ed"
+
+[[chart.variant]]
+name = "mc"
+set = { "method.kind" = "monte_carlo" }
+)");
+  ASSERT_EQ(carom("chart small.toml --out local --jobs 2 --quiet"), 0) << out_;
+  const std::string command =
+      "cd '" + dir_.string() +
+      "' && timeout -k 5 60 mpirun --allow-run-as-root --oversubscribe -n 2 '" + kCarom +
+      "' chart small.toml --out mpi > mpi.txt 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read(dir_ / "mpi.txt");
+  const std::string printed = read(dir_ / "mpi.txt");
+  const std::string conclusion = "carom chart: analysis.collision_frequency.a-a:";
+  EXPECT_NE(printed.find(conclusion), std::string::npos) << printed;
+  EXPECT_EQ(printed.find(conclusion), printed.rfind(conclusion)) << "printed by two ranks:\n"
+                                                                 << printed;
+  const auto local = read_csv(dir_ / "local" / "chart_cases.csv");
+  const auto mpi = read_csv(dir_ / "mpi" / "chart_cases.csv");
+  ASSERT_EQ(local.size(), 5u);
+  ASSERT_EQ(mpi.size(), 5u);
+  for (std::size_t r = 0; r < 5; ++r)
+    for (const std::size_t c : {0, 1, 2, 3, 5, 7})
+      EXPECT_EQ(local[r][c], mpi[r][c]) << r << "," << c;
+  EXPECT_GT(number(mpi[1][4]), 0.0) << "CPU seconds of a case run by a rank's pool";
+}
+
 }  // namespace

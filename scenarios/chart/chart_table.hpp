@@ -46,6 +46,7 @@ struct ChartVariantRow {
   std::vector<ChartObservableResult> observables;  ///< Per ChartSpec::observables.
 };
 
+/// Everything a chart measured: its cases, its variants, and per observable the conclusion.
 struct ChartTable {
   std::vector<ChartCaseRow> cases;        ///< In case order.
   std::vector<ChartVariantRow> variants;  ///< In variant order.

@@ -147,7 +147,7 @@ def plot(chart, name, obs, path):
     axes.set_ylabel(f"|{'relative ' if relative else ''}error| of {obs['key']}{unit}")
     title = f"{os.path.basename(chart['chart_file'])}: {obs['key']}"
     if left_out:
-        title += "\nnot drawn (no cost or zero error): " + ", ".join(left_out)
+        title += "\nnot drawn (no completed case, or an error of exactly 0): " + ", ".join(left_out)
     axes.set_title(title, fontsize=10)
     axes.grid(True, which="both", alpha=0.25)
     axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)

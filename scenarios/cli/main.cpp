@@ -5,6 +5,7 @@
 //   carom check SCENE [--set key=value ...] [--seed N]
 //   carom info FILE.h5 [--tree]
 //   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
+//   carom chart CHART.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
 //
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
 // is written), 130 interrupted by SIGINT/SIGTERM (a checkpoint is written). See run.hpp.
@@ -13,6 +14,7 @@
 #include <iostream>
 
 #include "carom/version.hpp"
+#include "scenarios/chart/chart.hpp"
 #include "scenarios/cli/check.hpp"
 #include "scenarios/cli/info.hpp"
 #include "scenarios/run/run.hpp"
@@ -80,6 +82,22 @@ int main(int argc, char** argv) {
       "Exit codes: 0 every case completed; 1 some case failed (summary still written); 2 bad sweep file or case "
       "(nothing run); 130 interrupted (run the same command again to continue).");
 
+  ChartOptions chart_options;
+  std::string chart_out;
+  CLI::App* chart = app.add_subcommand(
+      "chart", "speed against accuracy: a scene's variants over seeds, error against CPU cost (see CHARTS.md)");
+  chart->add_option("chart_file", chart_options.file, "chart file (TOML; see scenarios/chart/CHARTS.md)")->required();
+  chart->add_option("--jobs,-j", chart_options.jobs, "cases run at once (per MPI rank)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
+  CLI::Option* chart_out_option = chart->add_option("--out", chart_out, "output directory (replaces the file's out)");
+  chart->add_flag("--retry-failed", chart_options.retry_failed, "run cases that failed before again, from their start");
+  chart->add_flag("--dry-run", chart_options.dry_run, "validate every case (as carom check) and list them; run nothing");
+  chart->add_flag("--quiet", chart_options.quiet, "no progress lines (errors are still printed)");
+  chart->footer(
+      "Exit codes: 0 every case completed; 1 some case failed (tables still written); 2 bad chart file or case "
+      "(nothing run), or an observable no summary.json holds; 130 interrupted (run the same command again to "
+      "continue).");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -90,6 +108,10 @@ int main(int argc, char** argv) {
   if (*sweep) {
     if (sweep_out_option->count() > 0) sweep_options.out = sweep_out;
     return run_sweep(sweep_options);
+  }
+  if (*chart) {
+    if (chart_out_option->count() > 0) chart_options.out = chart_out;
+    return run_chart(chart_options);
   }
   try {
     if (*run || *check) {

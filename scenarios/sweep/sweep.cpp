@@ -73,15 +73,15 @@ class OutLock {
 /// on all of them. `print`: whether this rank prints the error (stages every rank does alike
 /// print on rank 0 only).
 template <class Stage>
-int stage(const SweepRanks& ranks, bool print, Stage&& body) {
+int stage(const SweepRanks& ranks, bool print, const std::string& command, Stage&& body) {
   int code = 0;
   try {
     body();
   } catch (const SceneError& e) {
-    if (print) std::cerr << "carom sweep: error: " << e.what() << "\n";
+    if (print) std::cerr << command << ": error: " << e.what() << "\n";
     code = kExitUsage;
   } catch (const std::exception& e) {
-    if (print) std::cerr << "carom sweep: failed: " << e.what() << "\n";
+    if (print) std::cerr << command << ": failed: " << e.what() << "\n";
     code = kExitFailure;
   }
   return ranks.max(code);
@@ -104,8 +104,8 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
   std::vector<SweepCase> cases;
   std::vector<std::string> digests;
   // 1. The sweep file and every case's scene, parsed (cheap; the same on every rank).
-  int code = stage(ranks, leader, [&] {
-    spec = read_sweep(options.file);
+  int code = stage(ranks, leader, options.command, [&] {
+    spec = options.spec ? *options.spec : read_sweep(options.file);
     if (options.out) spec.out = *options.out;
     if (spec.seeds.empty()) spec.seeds = {load_scene(spec.scene, spec.fixed, std::nullopt, spec.fixed_origins).seed};
     cases = spec.cases();
@@ -127,7 +127,7 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
   // 2. What each case needs; the cases to do, dealt out round-robin over the ranks.
   std::vector<CaseAction> actions;
   std::vector<std::size_t> todo, mine;
-  code = stage(ranks, leader, [&] {
+  code = stage(ranks, leader, options.command, [&] {
     for (const SweepCase& c : cases) {
       actions.push_back(next_action(case_directory(spec.out, c.index), options.retry_failed));
       if (options.dry_run || actions.back() != CaseAction::Skip) todo.push_back(c.index);
@@ -139,7 +139,7 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
   if (code != 0) return code;
 
   // 3. Particles placed for every case about to start from scratch, before anything runs.
-  code = stage(ranks, true, [&] {
+  code = stage(ranks, true, options.command, [&] {
     std::string errors;
     for (const std::size_t i : mine) {
       if (!options.dry_run && actions[i] != CaseAction::Run) continue;
@@ -154,7 +154,7 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
   });
   if (code != 0 || options.dry_run) {
     if (code == 0 && leader && !options.quiet) {
-      std::cout << "carom sweep: " << cases.size() << " cases, all valid:\n";
+      std::cout << options.command << ": " << cases.size() << " cases, all valid:\n";
       for (const SweepCase& c : cases)
         std::cout << "  case " << c.index << ": " << describe_case(spec, c) << "\n";
     }
@@ -163,10 +163,10 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
 
   // 4. The output directory (rank 0), then the cases.
   std::optional<OutLock> lock;
-  code = stage(ranks, true, [&] {
+  code = stage(ranks, true, options.command, [&] {
     if (!leader) return;
     lock.emplace(spec.out);
-    const fs::path copy = fs::path(spec.out) / "sweep.toml";
+    const fs::path copy = fs::path(spec.out) / options.record_name;
     if (!fs::exists(copy) || !fs::equivalent(spec.file, copy))
       fs::copy_file(spec.file, copy, fs::copy_options::overwrite_existing);
     for (const SweepCase& c : cases)
@@ -177,15 +177,15 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
   if (leader && !options.quiet) {
     const std::size_t resumed =
         static_cast<std::size_t>(std::count(actions.begin(), actions.end(), CaseAction::Resume));
-    std::cout << "carom sweep: " << cases.size() << " cases, " << cases.size() - todo.size()
+    std::cout << options.command << ": " << cases.size() << " cases, " << cases.size() - todo.size()
               << " already done, " << todo.size() << " to run (" << resumed << " to resume) on "
               << ranks.size() << " rank(s) x " << options.jobs << " job(s); outputs in " << spec.out
               << std::endl;
   }
-  const std::string prefix = ranks.size() > 1
-                                 ? "carom sweep [rank " + std::to_string(ranks.rank()) + "]: "
-                                 : "carom sweep: ";
-  code = stage(ranks, true, [&] {
+  const std::string prefix =
+      ranks.size() > 1 ? options.command + " [rank " + std::to_string(ranks.rank()) + "]: "
+                       : options.command + ": ";
+  code = stage(ranks, true, options.command, [&] {
     ProcessPool pool(options.jobs);
     std::size_t next = 0, finished = 0;
     std::vector<CaseResult> before(cases.size());
@@ -206,7 +206,7 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
       const std::string dir = case_directory(spec.out, i);
       const CaseResult result =
           attempt_result(dir, before[i], exit->exit_code, exit->signal, exit->asked_to_stop,
-                         exit->wall_seconds, ranks.rank());
+                         exit->wall_seconds, ranks.rank(), exit->cpu_seconds);
       write_case_result(dir, result);
       ++finished;
       if (!options.quiet) {
@@ -231,23 +231,16 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
       for (const CaseRow& row : table.cases) completed += row.result.status == "completed" ? 1 : 0;
       if (completed < cases.size() && outcome == kExitOk) outcome = kExitFailure;
       if (!options.quiet || completed < cases.size())
-        std::cout << "carom sweep: " << completed << " of " << cases.size() << " cases completed"
+        std::cout << options.command << ": " << completed << " of " << cases.size() << " cases completed"
                   << (interrupted ? " (interrupted; run the same command again to continue)" : "")
                   << "; summary in " << (fs::path(spec.out) / "summary.csv").string() << std::endl;
     } catch (const std::exception& e) {
-      std::cerr << "carom sweep: failed to write the summary: " << e.what() << "\n";
+      std::cerr << options.command << ": failed to write the summary: " << e.what() << "\n";
       outcome = kExitFailure;
     }
   }
   if (interrupted) outcome = kExitInterrupted;
   return ranks.broadcast(outcome);
-}
-
-/// True on the process that should print errors found before MPI is up (rank 0 or no launcher).
-bool first_launched_process() {
-  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
-    if (const char* value = std::getenv(name)) return std::atoi(value) == 0;
-  return true;
 }
 
 }  // namespace
@@ -258,10 +251,10 @@ int run_sweep(const SweepOptions& options) {
     install_sweep_signal_handlers();
     return sweep(options, ranks);
   } catch (const SceneError& e) {
-    if (first_launched_process()) std::cerr << "carom sweep: error: " << e.what() << "\n";
+    if (first_launched_process()) std::cerr << options.command << ": error: " << e.what() << "\n";
     return kExitUsage;
   } catch (const std::exception& e) {
-    std::cerr << "carom sweep: failed: " << e.what() << "\n";
+    std::cerr << options.command << ": failed: " << e.what() << "\n";
     return kExitFailure;
   }
 }

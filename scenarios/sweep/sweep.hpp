@@ -20,6 +20,8 @@
 #include <optional>
 #include <string>
 
+#include "scenarios/sweep/sweep_spec.hpp"
+
 namespace carom {
 
 struct SweepOptions {
@@ -29,6 +31,12 @@ struct SweepOptions {
   bool quiet = false;              ///< No progress lines (errors are still printed).
   bool retry_failed = false;       ///< Run failed cases again (from their start).
   bool dry_run = false;            ///< Validate every case and list them; run nothing.
+  /// Hooks for commands built on the sweep (`carom chart`): a spec already read from `file`
+  /// (then `file` is not read as a sweep file, only copied into OUT), the name that starts
+  /// every message, and the name of the copy of `file` in OUT.
+  std::optional<SweepSpec> spec;
+  std::string command = "carom sweep";
+  std::string record_name = "sweep.toml";
 };
 
 /// Runs a sweep; returns its exit code. Prints its own errors (on rank 0 under mpirun).

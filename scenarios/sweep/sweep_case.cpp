@@ -109,6 +109,7 @@ CaseResult read_case_result(const std::string& dir) {
     result.status = record.value("status", result.status);
     result.exit_code = record.value("exit_code", result.exit_code);
     result.elapsed_seconds = record.value("elapsed_seconds", 0.0);
+    result.cpu_seconds = record.value("cpu_seconds", 0.0);
     result.attempts = record.value("attempts", 0);
     result.rank = record.value("rank", 0);
     result.message = record.value("message", std::string());
@@ -131,6 +132,7 @@ void write_case_result(const std::string& dir, const CaseResult& result) {
   record["status"] = result.status;
   record["exit_code"] = result.exit_code;
   record["elapsed_seconds"] = result.elapsed_seconds;
+  record["cpu_seconds"] = result.cpu_seconds;
   record["attempts"] = result.attempts;
   record["rank"] = result.rank;
   record["message"] = result.message;
@@ -148,10 +150,12 @@ CaseAction next_action(const std::string& dir, bool retry_failed) {
 }
 
 CaseResult attempt_result(const std::string& dir, const CaseResult& previous, int exit_code,
-                          int signal, bool asked_to_stop, double wall_seconds, int rank) {
+                          int signal, bool asked_to_stop, double wall_seconds, int rank,
+                          double cpu_seconds) {
   CaseResult result = previous;
   result.attempts += 1;
   result.elapsed_seconds += wall_seconds;
+  result.cpu_seconds += cpu_seconds;
   result.rank = rank;
   result.exit_code = exit_code;
   result.message.clear();

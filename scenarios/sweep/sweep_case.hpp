@@ -28,6 +28,7 @@ struct CaseResult {
                        ///< the run's own failure status (inelastic_collapse, kick_unstable).
   int exit_code = -1;  ///< Of the last attempt; -1: none.
   double elapsed_seconds = 0;  ///< Wall time of all attempts together, s.
+  double cpu_seconds = 0;      ///< CPU time (user + system) of all attempts together, s.
   int attempts = 0;            ///< How many times a sweep started this case (run or resume).
   int rank = 0;                ///< The MPI rank that ran the last attempt.
   std::string message;         ///< Why it failed: the last line of its log; empty when completed.
@@ -56,9 +57,11 @@ void write_case_result(const std::string& dir, const CaseResult& result);
 CaseAction next_action(const std::string& dir, bool retry_failed);
 
 /// The result of an attempt that just ended with `exit_code` (`signal` when killed), read
-/// together with the summary.json and log.txt it left. `previous`: the record before it.
+/// together with the summary.json and log.txt it left. `previous`: the record before it;
+/// `wall_seconds` and `cpu_seconds` (s): what the attempt took, added to the case's totals.
 CaseResult attempt_result(const std::string& dir, const CaseResult& previous, int exit_code,
-                          int signal, bool asked_to_stop, double wall_seconds, int rank);
+                          int signal, bool asked_to_stop, double wall_seconds, int rank,
+                          double cpu_seconds);
 
 /// The last `lines` lines of a text file ("" when it cannot be read).
 std::string tail_of_file(const std::string& path, std::size_t lines);

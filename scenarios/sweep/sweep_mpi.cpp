@@ -23,6 +23,12 @@ int launcher_rank_count() {
   return 1;
 }
 
+bool first_launched_process() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const char* value = std::getenv(name)) return std::atoi(value) == 0;
+  return true;
+}
+
 #ifdef CAROM_HAVE_MPI
 
 SweepRanks::SweepRanks() {

@@ -40,5 +40,8 @@ class SweepRanks {
 
 /// The number of ranks the launcher says it started (1 when there is no launcher).
 int launcher_rank_count();
+/// True on the process that prints errors found before MPI is up, and that writes what is
+/// gathered after it is down: rank 0, or the only process when there is no launcher.
+bool first_launched_process();
 
 }  // namespace carom

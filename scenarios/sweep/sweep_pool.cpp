@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -117,7 +118,8 @@ std::optional<ChildExit> ProcessPool::wait() {
     forward_signals();
     for (std::size_t k = 0; k < running_.size(); ++k) {
       int status = 0;
-      const pid_t done = waitpid(running_[k].pid, &status, WNOHANG);
+      struct rusage usage {};
+      const pid_t done = wait4(running_[k].pid, &status, WNOHANG, &usage);
       if (done != running_[k].pid) continue;
       ChildExit exit;
       exit.tag = running_[k].tag;
@@ -125,6 +127,9 @@ std::optional<ChildExit> ProcessPool::wait() {
       exit.wall_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - running_[k].start)
               .count();
+      exit.cpu_seconds =
+          static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
       if (WIFSIGNALED(status)) {
         exit.signal = WTERMSIG(status);
         exit.exit_code = 128 + exit.signal;

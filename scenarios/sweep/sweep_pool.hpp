@@ -24,6 +24,7 @@ struct ChildExit {
   int signal = 0;              ///< The signal that killed it, 0 when it exited.
   bool asked_to_stop = false;  ///< A stop signal was forwarded to it.
   double wall_seconds = 0;     ///< s from start to exit.
+  double cpu_seconds = 0;      ///< CPU time it used, user + system (wait4's rusage), s.
 };
 
 class ProcessPool {

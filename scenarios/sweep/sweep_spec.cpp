@@ -56,24 +56,26 @@ std::optional<double> number_of(const toml::node& node) {
   return std::nullopt;
 }
 
-/// Flattens `sweep.set` into "key=value" (nested tables give dotted keys).
+/// Flattens a table of scene changes into "key=value" (nested tables give dotted keys).
 void flatten_set(const toml::table& table, const std::string& prefix, const TableReader& reader,
-                 std::vector<std::string>& out, std::vector<std::string>& origins) {
+                 const std::string& name, std::vector<std::string>& out,
+                 std::vector<std::string>& origins) {
   for (auto&& [key, value] : table) {
     const std::string path =
         prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
     if (const auto* t = value.as_table()) {
-      flatten_set(*t, path, reader, out, origins);
+      flatten_set(*t, path, reader, name, out, origins);
       continue;
     }
     const std::string text = override_text(value);
     if (text.empty())
       throw SceneError(
-          reader.where(value) + ": sweep.set: \"" + path + "\" = " + value_text(value) +
+          reader.where(value) + ": " + name + ": \"" + path + "\" = " + value_text(value) +
           " is not a value --set can take (allowed: a number, string, boolean or array of them)");
     if (path == "initial.seed")
-      throw SceneError(reader.where(value) +
-                       ": sweep.set: \"initial.seed\" is chosen by sweep.seeds; "
+      throw SceneError(reader.where(value) + ": " + name + ": \"initial.seed\" is chosen by " +
+                       name.substr(0, name.find('.')) +
+                       ".seeds; "
                        "give the seeds there (seeds = [" +
                        text + "])");
     out.push_back(path + "=" + text);
@@ -137,6 +139,12 @@ SweepAxis read_axis(TableReader& vary, const toml::table& raw) {
 
 }  // namespace
 
+void flatten_scene_changes(const toml::table& table, const TableReader& reader,
+                           const std::string& name, std::vector<std::string>& out,
+                           std::vector<std::string>& origins) {
+  flatten_set(table, "", reader, name, out, origins);
+}
+
 bool SweepAxis::numeric() const {
   return std::all_of(values.begin(), values.end(),
                      [](const SweepValue& v) { return v.number.has_value(); });
@@ -169,8 +177,15 @@ std::vector<SweepCase> SweepSpec::cases() const {
       c.origins = fixed_origins;
       c.origins.resize(c.overrides.size());
       for (std::size_t a = 0; a < axes.size(); ++a) {
-        c.overrides.push_back(axes[a].key + "=" + axes[a].values[choice[a]].text);
-        c.origins.push_back(axes[a].values[choice[a]].where);
+        const SweepValue& value = axes[a].values[choice[a]];
+        if (axes[a].label_only) {
+          c.overrides.insert(c.overrides.end(), value.sets.begin(), value.sets.end());
+          c.origins.insert(c.origins.end(), value.set_origins.begin(), value.set_origins.end());
+          c.origins.resize(c.overrides.size());
+          continue;
+        }
+        c.overrides.push_back(axes[a].key + "=" + value.text);
+        c.origins.push_back(value.where);
       }
       out.push_back(std::move(c));
     }
@@ -229,7 +244,7 @@ SweepSpec read_sweep(const std::string& path) {
     if (set == nullptr)
       sweep->fail("set",
                   "is not a table (write set = { \"time.end\" = 1.0 } or a [sweep.set] section)");
-    flatten_set(*set, "", *sweep, spec.fixed, spec.fixed_origins);
+    flatten_set(*set, "", *sweep, "sweep.set", spec.fixed, spec.fixed_origins);
   }
   std::vector<TableReader> vary = sweep->tables("vary");
   const toml::array* vary_raw = raw->get_as<toml::array>("vary");

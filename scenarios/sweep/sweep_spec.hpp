@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/scene/scene_reader.hpp"
+
 namespace carom {
 
 /// One value a varied key takes.
@@ -27,12 +29,18 @@ struct SweepValue {
   std::string label;  ///< As shown in tables: text, strings without their quotes.
   std::optional<double> number;  ///< The value when it is a number (integer or float).
   std::string where;  ///< "sweep.toml:LINE" of the value, for the scene's messages about it.
+  /// Of a label axis only: the "key=value" changes this value stands for, and per change the
+  /// "file:LINE" where it is written (a chart's variant, scenarios/chart/CHARTS.md).
+  std::vector<std::string> sets, set_origins;
 };
 
 /// A `[[sweep.vary]]` entry: a scene key and the values it takes.
 struct SweepAxis {
   std::string key;                 ///< Dotted scene key, as for --set.
   std::vector<SweepValue> values;  ///< At least one, no two alike.
+  /// True for a label axis (`carom chart`'s variants): `key` only names the column, and a case
+  /// gets each chosen value's `sets` instead of key=value. Sweep files never make one.
+  bool label_only = false;
   /// True when every value is a number (tables store the axis as numbers, else as text).
   bool numeric() const;
 };
@@ -64,6 +72,14 @@ struct SweepSpec {
   /// "key=label, key=label" of a group (for progress lines and messages).
   std::string describe_group(std::size_t group) const;
 };
+
+/// Flattens a table of scene changes (`sweep.set`, a chart variant's `set`) into "key=value"
+/// for --set, nested tables giving dotted keys, and per change the "file:LINE" of its value.
+/// `name`: the table's dotted name, for messages. Throws SceneError for a value --set cannot
+/// take and for `initial.seed` (seeds are listed apart).
+void flatten_scene_changes(const toml::table& table, const TableReader& reader,
+                           const std::string& name, std::vector<std::string>& out,
+                           std::vector<std::string>& origins);
 
 /// Reads and checks a sweep file. Throws SceneError for anything wrong in it.
 SweepSpec read_sweep(const std::string& path);

@@ -190,6 +190,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
 void prepare_output_directory(const fs::path& dir, bool overwrite) {
   const char* outputs[] = {"run.h5",
                            "run.xmf",
+                           "run_gas.xmf",
                            "checkpoint.h5",
                            "summary.json",
                            "report.md",

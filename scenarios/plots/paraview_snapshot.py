@@ -6,14 +6,16 @@ coloured by speed, inside the outline of the domain.
         [--out PNG] [--size W H] [--view iso|x|y|z] [--max-speed V]
 
     --time T       simulated time, s: the last snapshot at or before T (default: the last one)
-    --out PNG      the image (default: RUN_snapshot_3d_t<time>.png beside run.xmf)
+    --out PNG      the image (default: run_snapshot_3d.png beside run.xmf; `carom run
+                   --overwrite` removes it with the run's other figures)
     --size W H     image size in pixels (default 1600 1200)
     --view         camera: iso (default, from the front, right and above), x, y or z (looking
                    along that axis; z looks down)
     --max-speed V  top of the colour scale, m/s (default: the snapshot's largest speed)
 
 Reads run.xmf with ParaView's default reader for .xmf (Xdmf3ReaderS), as the ParaView GUI
-would; the domain box comes from run.h5 (/domain) when h5py is importable. Needs ParaView's
+would; the domain box and the scene's name come from run.h5 when h5py is importable (Debian:
+python3-h5py). Needs ParaView's
 Python (Debian: paraview python3-paraview); without a display run it under xvfb-run (Debian:
 xvfb xauth): `pvpython --force-offscreen-rendering` crashes on machines without a GPU.
 Prints the file written, the snapshot time and the particle count.
@@ -50,15 +52,18 @@ def snapshot_time(times, requested):
     return at_or_before[-1] if at_or_before else times[0]
 
 
-def domain_box(xmf):
-    """(lower, upper) of the run's domain from run.h5 beside the sidecar; None if unreadable."""
+def run_metadata(xmf):
+    """The domain's (lower, upper) corners and the scene's name from run.h5 beside the sidecar;
+    None when it cannot be read (no h5py, or no run file)."""
     h5_path = os.path.splitext(xmf)[0] + ".h5"
     try:
         os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
         import h5py
         with h5py.File(h5_path, "r") as f:
-            return list(f["domain/lower"][()]), list(f["domain/upper"][()])
-    except Exception:  # no h5py, or no run file beside the sidecar: outline the particles
+            name = f.attrs.get("scene_name", "")
+            name = name.decode() if isinstance(name, bytes) else str(name)
+            return list(f["domain/lower"][()]), list(f["domain/upper"][()]), name
+    except Exception:  # the figure goes on with the particles' bounding box and the folder name
         return None
 
 
@@ -131,9 +136,9 @@ def main(argv):
     bar.Visibility = 1
 
     # The domain: its box from run.h5, or the particles' bounding box.
-    box = domain_box(xmf)
-    if box is not None:
-        lower, upper = box
+    metadata = run_metadata(xmf)
+    if metadata is not None:
+        lower, upper, scene_name = metadata
         outline = pv.Box(XLength=upper[0] - lower[0], YLength=upper[1] - lower[1],
                          ZLength=upper[2] - lower[2],
                          Center=[(a + b) / 2 for a, b in zip(lower, upper)])
@@ -145,7 +150,7 @@ def main(argv):
     frame.LineWidth = 2.0
     frame.ColorArrayName = ["POINTS", ""]
 
-    name = os.path.basename(os.path.dirname(xmf)) or os.path.basename(xmf)
+    name = (metadata[2] if metadata is not None else "") or os.path.basename(os.path.dirname(xmf))
     label = pv.Text(Text=f"{name}   t = {time:.4g} s   {count} particles")
     text = pv.Show(label, view)
     text.WindowLocation = "Upper Left Corner"
@@ -157,7 +162,7 @@ def main(argv):
     direction = {"iso": [1.0, -1.6, 0.9], "x": [1.0, 0.0, 0.0], "y": [0.0, -1.0, 0.0],
                  "z": [0.0, 0.0, 1.0]}[args.view]
     norm = math.sqrt(sum(d * d for d in direction))
-    bounds = outline.GetDataInformation().GetBounds() if box is None else \
+    bounds = outline.GetDataInformation().GetBounds() if metadata is None else \
         [lower[0], upper[0], lower[1], upper[1], lower[2], upper[2]]
     center = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
     view.CameraFocalPoint = center
@@ -166,7 +171,7 @@ def main(argv):
     view.ResetCamera(False)
 
     out = args.out or os.path.join(os.path.dirname(xmf),
-                                   os.path.splitext(os.path.basename(xmf))[0] + f"_snapshot_3d_t{time:.4g}.png")
+                                   os.path.splitext(os.path.basename(xmf))[0] + "_snapshot_3d.png")
     pv.SaveScreenshot(out, view, ImageResolution=list(args.size), TransparentBackground=0)
     print(f"{out}: t = {time:.6g} s, {count} particles")
     # Without this, pvpython 5.11 under Xvfb ends with "GLXBadContext" and exit status 1 while

@@ -48,7 +48,7 @@ def snapshot_time(times, requested):
         return None
     if requested is None:
         return times[-1]
-    at_or_before = [t for t in times if t <= requested * (1 + 1e-12) + 1e-300]
+    at_or_before = [t for t in times if t <= requested + 1e-12 * abs(requested)]
     return at_or_before[-1] if at_or_before else times[0]
 
 
@@ -76,7 +76,6 @@ def main(argv):
         sys.exit(f"paraview_snapshot.py: {args.xmf}: no such file")
 
     from paraview import simple as pv
-    from paraview import servermanager
 
     reader = pv.OpenDataFile(xmf)
     if reader is None:
@@ -110,10 +109,9 @@ def main(argv):
     view.EnableRenderOnInteraction = 0
 
     spheres = pv.Show(glyph, view)
-    glyph.UpdatePipeline(time)
-    particles = servermanager.Fetch(speed)
-    count = particles.GetNumberOfPoints() if particles is not None else 0
-    speed_range = particles.GetPointData().GetArray("speed").GetRange() if count else (0.0, 0.0)
+    speed.UpdatePipeline(time)
+    count = speed.GetDataInformation().GetNumberOfPoints()
+    speed_range = speed.PointData["speed"].GetRange() if count else (0.0, 0.0)
     top = args.max_speed if args.max_speed is not None else max(speed_range[1], 1e-12)
 
     pv.ColorBy(spheres, ("POINTS", "speed"))
@@ -126,7 +124,9 @@ def main(argv):
     bar.Title = "speed (m/s)"
     bar.ComponentTitle = ""
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
-    bar.TitleFontSize = bar.LabelFontSize = 18
+    # Font sizes in points, scaled with the image so that labels keep their share of it.
+    font = max(14, round(args.size[1] / 50))
+    bar.TitleFontSize = bar.LabelFontSize = font
     bar.TitleBold = 0
     bar.RangeLabelFormat = "%-#.3g"
     bar.AutomaticLabelFormat = 1
@@ -138,7 +138,7 @@ def main(argv):
     # The domain: its box from run.h5, or the particles' bounding box.
     metadata = run_metadata(xmf)
     if metadata is not None:
-        lower, upper, scene_name = metadata
+        lower, upper, _ = metadata
         outline = pv.Box(XLength=upper[0] - lower[0], YLength=upper[1] - lower[1],
                          ZLength=upper[2] - lower[2],
                          Center=[(a + b) / 2 for a, b in zip(lower, upper)])
@@ -155,7 +155,7 @@ def main(argv):
     text = pv.Show(label, view)
     text.WindowLocation = "Upper Left Corner"
     text.Color = [0.0, 0.0, 0.0]
-    text.FontSize = 20
+    text.FontSize = font + 2
 
     # Camera: the whole domain in view, z up.
     view.CameraViewUp = [0.0, 0.0, 1.0] if args.view != "z" else [0.0, 1.0, 0.0]
@@ -169,6 +169,7 @@ def main(argv):
     view.CameraPosition = [c + d / norm for c, d in zip(center, direction)]
     view.CameraParallelProjection = 0
     view.ResetCamera(False)
+    view.GetActiveCamera().Dolly(0.92)  # a margin around the domain
 
     out = args.out or os.path.join(os.path.dirname(xmf),
                                    os.path.splitext(os.path.basename(xmf))[0] + "_snapshot_3d.png")

@@ -12,14 +12,16 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numeric>
 #include <regex>
 #include <sstream>
 #include <tuple>
 
-#include "core/hdf5.hpp"
-#include "scenarios/scene/granular_gas.hpp"
-#include "scenarios/run/run_output.hpp"
 #include "checkpoint_support.hpp"
+#include "core/hdf5.hpp"
+#include "scenarios/run/run_output.hpp"
+#include "scenarios/run/xdmf_sidecar.hpp"
+#include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
 namespace carom {
@@ -289,27 +291,59 @@ TEST_F(OutputTest, TimeSeriesPressureAndCollisionRateMatchKineticTheory) {
 
 // ---- the XDMF sidecar -------------------------------------------------------------------------
 
-/// Checks every grid of the sidecar against the HDF5 file: each referenced dataset exists with
-/// the stated dimensions, the point count matches, and the time is the snapshot's. Returns the
-/// number of grids.
-std::size_t check_xdmf(const std::string& xmf, const std::string& h5_path) {
-  std::ifstream in(xmf);
-  EXPECT_TRUE(in.good()) << xmf;
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
   std::stringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  EXPECT_NE(text.find("CollectionType=\"Temporal\""), std::string::npos);
+  return buffer.str();
+}
+
+/// Checks the HDF5 references of one grid's body: each dataset exists with the stated
+/// dimensions and number type, is relative to the sidecar, and has `rows` rows. Returns how many.
+std::size_t check_data_items(const std::string& body, const h5::File& f,
+                             const std::string& data_file, std::size_t rows) {
+  const std::regex item_pattern(
+      R"re(<DataItem Dimensions="([\d ]+)" NumberType="(\w+)" Precision="(\d)" Format="HDF">([^:<]+):([^<]+)</DataItem>)re");
+  std::size_t items = 0;
+  for (std::sregex_iterator it(body.begin(), body.end(), item_pattern), end; it != end;
+       ++it, ++items) {
+    const std::smatch& item = *it;
+    EXPECT_EQ(item[4].str(), data_file) << "references are relative to the sidecar";
+    const h5::Dataset dataset = f.open_dataset(item[5].str());
+    std::vector<hsize_t> dims;
+    std::istringstream dimension_text(item[1].str());
+    for (hsize_t d; dimension_text >> d;) dims.push_back(d);
+    EXPECT_EQ(dataset.shape(), dims) << item[5];
+    EXPECT_EQ(dims[0], rows) << item[5];
+    // The stated number type is the stored one.
+    const hid_t type = H5Dget_type(dataset.id());
+    EXPECT_EQ(H5Tget_size(type), std::stoul(item[3])) << item[5];
+    EXPECT_EQ(H5Tget_class(type) == H5T_FLOAT, item[2] == "Float") << item[5];
+    H5Tclose(type);
+  }
+  return items;
+}
+
+/// Checks every grid of the particles' sidecar against the HDF5 file: each referenced dataset
+/// exists with the stated dimensions, the point count matches, the connectivity makes one
+/// vertex cell of each particle (0, 1, ..., n - 1: what ParaView's Xdmf3 readers need to make
+/// cells at all), and the time is the snapshot's. Returns the number of grids.
+std::size_t check_xdmf(const std::string& xmf, const std::string& h5_path) {
+  const std::string text = read_text(xmf);
+  EXPECT_NE(
+      text.find("<Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">"),
+      std::string::npos);
   EXPECT_EQ(text.find("</Xdmf>"), text.size() - 8) << "a complete document";
+  EXPECT_EQ(text.find("gas"), std::string::npos) << "the gas has its own sidecar";
 
   const h5::File f = h5::File::open(h5_path, false);
   const std::string data_file = fs::path(h5_path).filename().string();
   const std::regex grid_pattern(
-      R"re(<Grid Name="snapshot_(\d+)" GridType="Uniform">([\s\S]*?)</Grid>)re");
+      R"re(<Grid Name="particles_(\d+)" GridType="Uniform">([\s\S]*?)</Grid>)re");
   const std::regex time_pattern(R"re(<Time Value="([^"]+)"/>)re");
   const std::regex topology_pattern(
-      R"re(<Topology TopologyType="Polyvertex" NumberOfElements="(\d+)" NodesPerElement="1"/>)re");
-  const std::regex item_pattern(
-      R"re(<DataItem Dimensions="([\d ]+)" NumberType="(\w+)" Precision="(\d)" Format="HDF">([^:<]+):([^<]+)</DataItem>)re");
+      R"re(<Topology TopologyType="Polyvertex" NumberOfElements="(\d+)" NodesPerElement="1">\s*<DataItem [^>]*>[^:<]+:([^<]+)</DataItem>\s*</Topology>)re");
   std::size_t grids = 0;
   for (std::sregex_iterator g(text.begin(), text.end(), grid_pattern), end; g != end;
        ++g, ++grids) {
@@ -317,34 +351,23 @@ std::size_t check_xdmf(const std::string& xmf, const std::string& h5_path) {
     SCOPED_TRACE("grid " + name);
     std::smatch m;
     if (!std::regex_search(body, m, topology_pattern)) {
-      ADD_FAILURE() << "no Polyvertex topology in " << body;
+      ADD_FAILURE() << "no Polyvertex topology with its connectivity in " << body;
       continue;
     }
     const std::size_t points = std::stoul(m[1]);
+    EXPECT_EQ(f.open_group("snapshots/" + name).open_dataset("radius").size(), points);
+    const std::vector<std::int64_t> vertices = f.read<std::int64_t>(m[2].str());
+    std::vector<std::int64_t> rows(points);
+    std::iota(rows.begin(), rows.end(), std::int64_t{0});
+    EXPECT_EQ(vertices, rows) << "vertex cell k is particle row k";
     const double time = f.open_group("snapshots/" + name).attribute<double>("time");
     if (std::regex_search(body, m, time_pattern)) {
       EXPECT_EQ(std::stod(m[1]), time) << "17 digits give the double back";
     } else {
       ADD_FAILURE() << "no Time in " << body;
     }
-    std::size_t items = 0;
-    for (std::sregex_iterator it(body.begin(), body.end(), item_pattern); it != end;
-         ++it, ++items) {
-      const std::smatch& item = *it;
-      EXPECT_EQ(item[4].str(), data_file) << "references are relative to the sidecar";
-      const h5::Dataset dataset = f.open_dataset(item[5].str());
-      std::vector<hsize_t> dims;
-      std::istringstream dimension_text(item[1].str());
-      for (hsize_t d; dimension_text >> d;) dims.push_back(d);
-      EXPECT_EQ(dataset.shape(), dims) << item[5];
-      EXPECT_EQ(dims[0], points) << item[5];
-      // The stated number type is the stored one.
-      const hid_t type = H5Dget_type(dataset.id());
-      EXPECT_EQ(H5Tget_size(type), std::stoul(item[3])) << item[5];
-      EXPECT_EQ(H5Tget_class(type) == H5T_FLOAT, item[2] == "Float") << item[5];
-      H5Tclose(type);
-    }
-    EXPECT_EQ(items, 6u) << "position, radius, velocity, spin, species, id";
+    EXPECT_EQ(check_data_items(body, f, data_file, points), 7u)
+        << "connectivity, position, radius, velocity, spin, species, id";
   }
   return grids;
 }
@@ -368,6 +391,54 @@ TEST_F(OutputTest, XdmfSidecarReferencesEverySnapshotDataset) {
   run.reset();
   EXPECT_EQ(check_xdmf(file("run.xmf"), file("run.h5")), 4u);
   EXPECT_FALSE(fs::exists(file("run.xmf.tmp")));
+}
+
+// The gas's sidecar: a uniform grid whose node counts, origin and spacing are listed z, y, x
+// (XDMF's order for 3DCoRectMesh and ORIGIN_DXDYDZ) and whose cell fields are the snapshot's.
+// The cells, origin and spacing differ on every axis, so a swapped axis shows.
+TEST_F(OutputTest, GasSidecarListsTheGridZYX) {
+  const XdmfGasGrid grid{{2, 3, 4}, Vec3(-1.0, -2.0, -3.0), Vec3(0.5, 0.25, 0.125)};
+  {
+    const h5::File f = h5::File::create(file("run.h5"));
+    const h5::Group snapshots = f.create_group("snapshots");
+    for (const char* snapshot : {"000000", "000001"}) {
+      const h5::Group fields = snapshots.create_group(snapshot).create_group("gas");
+      fields.write("porosity", std::vector<double>(24, 0.5), {4, 3, 2});
+      fields.write("pressure", std::vector<double>(24, 1e5), {4, 3, 2});
+      fields.write("velocity", std::vector<double>(72, 0.0), {4, 3, 2, 3});
+    }
+  }
+  write_xdmf_sidecars(file("run.h5"), {{"000000", 0.0, 0}, {"000001", 0.5, 0}}, &grid);
+  EXPECT_EQ(gas_xdmf_path_of(file("run.h5")), file("run_gas.xmf"));
+  const std::string text = read_text(file("run_gas.xmf"));
+  EXPECT_NE(text.find("<Grid Name=\"gas\" GridType=\"Collection\" CollectionType=\"Temporal\">"),
+            std::string::npos);
+  const h5::File f = h5::File::open(file("run.h5"), false);
+  const std::regex grid_pattern(
+      R"re(<Grid Name="gas_(\d+)" GridType="Uniform">([\s\S]*?)</Grid>)re");
+  std::size_t grids = 0;
+  for (std::sregex_iterator g(text.begin(), text.end(), grid_pattern), end; g != end;
+       ++g, ++grids) {
+    const std::string body = (*g)[2];
+    EXPECT_NE(body.find("<Time Value=\"" + std::string(grids == 0 ? "0" : "0.5") + "\"/>"),
+              std::string::npos)
+        << body;
+    EXPECT_NE(body.find("<Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"5 4 3\"/>"),
+              std::string::npos)
+        << body;
+    EXPECT_NE(body.find("<DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+                        "Format=\"XML\">-3 -2 -1</DataItem>"),
+              std::string::npos)
+        << body;
+    EXPECT_NE(body.find("<DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+                        "Format=\"XML\">0.125 0.25 0.5</DataItem>"),
+              std::string::npos)
+        << body;
+    EXPECT_NE(body.find("/snapshots/" + (*g)[1].str() + "/gas/porosity"), std::string::npos)
+        << body;
+    EXPECT_EQ(check_data_items(body, f, "run.h5", 4), 3u) << "porosity, pressure, velocity";
+  }
+  EXPECT_EQ(grids, 2u);
 }
 
 TEST_F(OutputTest, AppendContinuesTheTimeSeries) {

@@ -185,17 +185,20 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
 
 /// Creates the output directory, refusing to mix a new run with an earlier one's files. Those
 /// are carom's own file names only: its outputs, and the figures scenarios/plots/plot.py draws
-/// beside run.h5 (RUN_NAME.png; a test checks this list against plot.py). --overwrite removes
+/// beside run.h5 (RUN_NAME.png; a test checks this list against plot.py) and the default image
+/// of scenarios/plots/paraview_snapshot.py (run_snapshot_3d.png). --overwrite removes
 /// them; anything else in the directory is left alone.
 void prepare_output_directory(const fs::path& dir, bool overwrite) {
   const char* outputs[] = {"run.h5",
                            "run.xmf",
+                           "run_gas.xmf",
                            "checkpoint.h5",
                            "summary.json",
                            "report.md",
                            "run_energies.png",
                            "run_collision_rates.png",
                            "run_snapshot.png",
+                           "run_snapshot_3d.png",
                            "run_gas.png",
                            "run_gas_field.png",
                            "run_mixing.png",

@@ -4,18 +4,15 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 
 #include "carom/version.hpp"
 #include "core/hdf5.hpp"
 #include "fluid/drag.hpp"
 #include "scenarios/run/output_support.hpp"
+#include "scenarios/run/xdmf_sidecar.hpp"
 
 namespace carom {
 
@@ -319,6 +316,7 @@ void RunFile::write_snapshot(const CollisionMethod& sim, const GasCoupling* gas)
     fields.write("pressure", gas->pressure_field(), gas_shape(d.gas_cells, 0));
     fields.write("velocity", flatten(gas->velocity_field()), gas_shape(d.gas_cells, 3));
   }
+  write_vertex_cells(d.file, n);
   d.snapshots.push_back({name, sim.time(), n});
   d.file.flush();
   d.write_xdmf();
@@ -409,85 +407,11 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
 }
 
 void RunFile::Impl::write_xdmf() const {
-  const std::string data_file = base_name(path);
-  std::ostringstream xml;
-  xml.precision(17);
-  xml << "<?xml version=\"1.0\" ?>\n"
-      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-      << "<Xdmf Version=\"3.0\">\n"
-      << "  <Domain>\n"
-      << "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (const SnapshotEntry& s : snapshots) {
-    const std::string where = data_file + ":/snapshots/" + s.name + "/";
-    auto item = [&](const std::string& dataset, bool vector, const char* type, int precision) {
-      xml << "          <DataItem Dimensions=\"" << s.count << (vector ? " 3" : "")
-          << "\" NumberType=\"" << type << "\" Precision=\"" << precision << "\" Format=\"HDF\">"
-          << where << dataset << "</DataItem>\n";
-    };
-    auto attribute = [&](const std::string& dataset, bool vector, const char* type, int precision) {
-      xml << "        <Attribute Name=\"" << dataset << "\" AttributeType=\""
-          << (vector ? "Vector" : "Scalar") << "\" Center=\"Node\">\n";
-      item(dataset, vector, type, precision);
-      xml << "        </Attribute>\n";
-    };
-    xml << "      <Grid Name=\"snapshot_" << s.name << "\" GridType=\"Uniform\">\n"
-        << "        <Time Value=\"" << s.time << "\"/>\n"
-        << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << s.count
-        << "\" NodesPerElement=\"1\"/>\n"
-        << "        <Geometry GeometryType=\"XYZ\">\n";
-    item("position", true, "Float", 8);
-    xml << "        </Geometry>\n";
-    attribute("radius", false, "Float", 8);
-    attribute("velocity", true, "Float", 8);
-    attribute("spin", true, "Float", 8);
-    attribute("species", false, "Int", 4);
-    attribute("id", false, "Int", 8);
-    xml << "      </Grid>\n";
-  }
-  xml << "    </Grid>\n";
-  if (has_gas) {
-    // The gas: cell-centred fields on a uniform grid (nodes = cells + 1 per axis, z y x order).
-    const std::string dims = std::to_string(gas_cells[2]) + " " + std::to_string(gas_cells[1]) +
-                             " " + std::to_string(gas_cells[0]);
-    const std::string nodes = std::to_string(gas_cells[2] + 1) + " " +
-                              std::to_string(gas_cells[1] + 1) + " " + std::to_string(gas_cells[0] + 1);
-    xml << "    <Grid Name=\"gas\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (const SnapshotEntry& s : snapshots) {
-      const std::string where = data_file + ":/snapshots/" + s.name + "/gas/";
-      xml << "      <Grid Name=\"gas_" << s.name << "\" GridType=\"Uniform\">\n"
-          << "        <Time Value=\"" << s.time << "\"/>\n"
-          << "        <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
-          << "        <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-          << "          <DataItem Dimensions=\"3\" Format=\"XML\">" << gas_lower.z() << " "
-          << gas_lower.y() << " " << gas_lower.x() << "</DataItem>\n"
-          << "          <DataItem Dimensions=\"3\" Format=\"XML\">" << gas_spacing.z() << " "
-          << gas_spacing.y() << " " << gas_spacing.x() << "</DataItem>\n"
-          << "        </Geometry>\n";
-      for (const char* field : {"porosity", "pressure", "velocity"}) {
-        const bool vector = std::string(field) == "velocity";
-        xml << "        <Attribute Name=\"" << field << "\" AttributeType=\""
-            << (vector ? "Vector" : "Scalar") << "\" Center=\"Cell\">\n"
-            << "          <DataItem Dimensions=\"" << dims << (vector ? " 3" : "")
-            << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << where << field
-            << "</DataItem>\n        </Attribute>\n";
-      }
-      xml << "      </Grid>\n";
-    }
-    xml << "    </Grid>\n";
-  }
-  xml << "  </Domain>\n</Xdmf>\n";
-
-  // Written aside and renamed, so that a viewer never reads half a file.
-  const std::string sidecar = xdmf_path_of(path);
-  const std::string temporary = sidecar + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << xml.str();
-    if (!out.flush()) throw std::runtime_error(temporary + ": cannot write the XDMF sidecar");
-  }
-  if (std::rename(temporary.c_str(), sidecar.c_str()) != 0)
-    throw std::runtime_error(sidecar +
-                             ": cannot replace the XDMF sidecar: " + std::strerror(errno));
+  std::vector<XdmfSnapshot> entries;
+  entries.reserve(snapshots.size());
+  for (const SnapshotEntry& s : snapshots) entries.push_back({s.name, s.time, s.count});
+  const XdmfGasGrid grid{gas_cells, gas_lower, gas_spacing};
+  write_xdmf_sidecars(path, entries, has_gas ? &grid : nullptr);
 }
 
 }  // namespace carom

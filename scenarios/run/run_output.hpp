@@ -1,5 +1,5 @@
 #pragma once
-/// The HDF5 file of one run (plus its XDMF sidecar) and checkpoints.
+/// The HDF5 file of one run (plus its XDMF sidecars) and checkpoints.
 ///
 /// Layout of a run file (all SI; tensors are 9 values row by row: xx xy xz yx ... zz):
 ///   /                    attributes: kind = "carom run", carom_version, seed, scene_name
@@ -23,9 +23,11 @@
 ///   /analysis/          (runs with an analysis) id, tagged, start_height (by particle id),
 ///                        mixing_grid/ and field_grid/ (lower, upper, cells); the analysis
 ///                        series (run_analysis.hpp) are in /timeseries beside the others
-/// The XDMF sidecar (same name, .xmf instead of .h5) lists the snapshots as a temporal
-/// collection of Polyvertex grids with radius, velocity, spin, species and id as point data;
-/// it is rewritten (atomically) after every snapshot.
+///   /xdmf/vertices_N     0 .. N-1 (int64): the connectivity of the sidecar's N vertex cells
+/// The XDMF sidecars (xdmf_sidecar.hpp) beside it: run.xmf lists the snapshots' particles as a
+/// time series of vertex cells with radius, velocity, spin, species and id as point data, and
+/// with a gas run_gas.xmf lists the gas fields as cell data; both are rewritten (atomically)
+/// after every snapshot.
 ///
 /// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
 /// scene_name; /scene; /state: the method's state, attribute method = its kind (for the

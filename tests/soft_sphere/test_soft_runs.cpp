@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <cstring>
 #include <numbers>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/hdf5.hpp"
 #include "core/rng.hpp"
@@ -107,7 +110,7 @@ TEST(SoftGas, CoolingFollowsHaff) {
     elastic.run_until(3.0);
     const double temperature0 = temperature(elastic);
     // Continue with e = 0.9: the state handed over through a checkpoint group.
-    const std::string path = testing::TempDir() + "soft_cooling.h5";
+    const std::string path = testing::TempDir() + "soft_cooling_" + std::to_string(getpid()) + ".h5";
     {
       h5::File f = h5::File::create(path);
       elastic.save_state(f.create_group("state"));
@@ -269,7 +272,7 @@ TEST(SoftDeterminism, RunsAndCheckpointsAreBitForBit) {
   a.run_until(0.04);
   b.run_until(b.stop_time(0.013));
   b.run_until(b.stop_time(0.02));
-  const std::string path = testing::TempDir() + "soft_resume.h5";
+  const std::string path = testing::TempDir() + "soft_resume_" + std::to_string(getpid()) + ".h5";
   {
     h5::File f = h5::File::create(path);
     b.save_state(f.create_group("state"));

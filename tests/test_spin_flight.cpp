@@ -38,6 +38,7 @@ struct Launch {
   std::string lift = "oesterle_bui_dinh";
   std::string torque = "dennis";
   std::string flight = "kick";
+  double updraft = 0.0;  // superficial gas velocity in through z_low and out at z_high, m/s
 };
 
 std::string vec(const Vec3& v) {
@@ -70,7 +71,12 @@ std::string scene_text(const Launch& l) {
          "\n[gas]\ncoupling = \"one_way\"\ndensity = 1.2\nviscosity = 1.8e-5\n"
          "cells = [1, 1, 8]\ntime_step = " +
          step + "\ndrag = \"morsi_alexander\"\nmagnus_lift = \"" + l.lift +
-         "\"\nrotational_torque = \"" + l.torque + "\"\n\n[time]\nend = 1.0\n";
+         "\"\nrotational_torque = \"" + l.torque + "\"\n" +
+         (l.updraft != 0.0 ? "[gas.boundaries]\nz_low = { type = \"inlet\", velocity = " +
+                                 std::to_string(l.updraft) +
+                                 " }\nz_high = { type = \"outlet\", pressure = 0.0 }\n"
+                           : std::string()) +
+         "\n[time]\nend = 1.0\n";
 }
 
 struct CoupledRun {
@@ -255,10 +261,11 @@ INSTANTIATE_TEST_SUITE_P(Methods, BackspinThrow, ::testing::Values("event_driven
                            return std::string(info.param);
                          });
 
-// A checkpoint in the middle of a throw (at a kick and fluid step time, t = 0.1 s, and between
-// kicks, t = 0.10025 s) resumes bit for bit: position, velocity and spin at 0.2 s equal the
-// uninterrupted run's exactly. The gas velocity at each particle, which the spin kicks read
-// until the next fluid step, travels in the gas checkpoint (particle_gas_velocity).
+// A checkpoint in the middle of a throw into a 0.5 m/s updraft (at a kick and fluid step time,
+// t = 0.1 s, and between kicks, t = 0.10025 s) resumes bit for bit: position, velocity and spin
+// at 0.2 s equal the uninterrupted run's exactly. The gas velocity at each particle, which the
+// spin kicks read until the next fluid step, travels in the gas checkpoint
+// (particle_gas_velocity); with the updraft it is not zero, so a wrong one would show.
 class SpinForceResume : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SpinForceResume, CheckpointResumesBitForBit) {
@@ -266,6 +273,7 @@ TEST_P(SpinForceResume, CheckpointResumesBitForBit) {
   l.method = GetParam();
   l.velocity = Vec3(1.2, 0.0, 0.0);
   l.spin = Vec3(0.0, -600.0, 0.0);
+  l.updraft = 0.5;
   CoupledRun straight = start(l);
   straight.sim->run_until(0.2);
   const std::filesystem::path dir =
@@ -285,6 +293,7 @@ TEST_P(SpinForceResume, CheckpointResumesBitForBit) {
         restore_method(scene.system, scene.method, checkpoint.method_state());
     const h5::Group gas_state = checkpoint.gas_state();
     std::unique_ptr<GasCoupling> gas = attach_gas(*sim, scene, &gas_state);
+    ASSERT_GT(gas->gas_velocity_at_particles().at(0).z(), 0.4) << "the updraft reaches the bead";
     sim->run_until(0.2);
     EXPECT_EQ(sim->position(0), straight.sim->position(0)) << save_at;
     EXPECT_EQ(sim->velocity(0), straight.sim->velocity(0)) << save_at;

@@ -212,6 +212,7 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
   species_gas_force_.assign(species_density_.size(), Vec3::Zero());
   species_porosity_.assign(species_density_.size(), 0.0);
   species_count_.assign(species_density_.size(), 0);
+  particle_gas_velocity_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 u = Vec3::Zero(), grad_p = Vec3::Zero();
     double eps = 0.0;
@@ -227,6 +228,7 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
     const std::uint32_t s = particles.species[i];
     flights[i] = RelaxFlight{rate, gravity_ + rate * u - grad_p / species_density_[s]};
     total_drag_ += k * (u - v);
+    particle_gas_velocity_[i] = u;
     species_gas_velocity_[s] += u;
     species_gas_force_[s] += k * (u - v) - (particles.mass[i] / species_density_[s]) * grad_p;
     species_porosity_[s] += eps;

@@ -92,6 +92,9 @@ class GasCoupling {
   Vec3 mean_gas_force_on(std::uint32_t s) const;
   /// Mean porosity interpolated to the particles of species s at the last step.
   double mean_porosity_at(std::uint32_t s) const;
+  /// Interstitial gas velocity u_i at each particle at the last step (method order), m/s: what
+  /// the spin forces' kicks read (fluid/kick_scheme.hpp).
+  const std::vector<Vec3>& gas_velocity_at_particles() const { return particle_gas_velocity_; }
   /// Sum of the drag forces on the particles at the last step, N.
   const Vec3& total_drag() const { return total_drag_; }
   const CouplingTimes& times() const { return times_; }
@@ -132,6 +135,7 @@ class GasCoupling {
   std::vector<Vec3> species_gas_force_;          ///< Sum of K_i (u_i - v_i) - V_i grad p_i, N.
   std::vector<double> species_porosity_;         ///< Sum of eps_i per species (last step).
   std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
+  std::vector<Vec3> particle_gas_velocity_;      ///< u_i per particle (last step), m/s.
   Vec3 total_drag_ = Vec3::Zero();
   CouplingTimes times_;
 };

@@ -21,6 +21,9 @@
 //   fluid_steps              (1) uint64        fluid steps taken (CouplingTimes::steps)
 //   unconverged_steps        (1) uint64        of which SIMPLE hit its iteration limit
 //   wall_seconds             (3)               CouplingTimes mapping, solve, interpolation, s
+//   particle_gas_velocity    (N, 3)            u_i at each of the N particles at the last step,
+//                                               m/s, in the method's particle order: the spin
+//                                               forces' kicks read it (only with spin forces on)
 // The per-particle cell weights are not stored: each step maps the particles afresh.
 #include <cstdint>
 #include <stdexcept>
@@ -105,6 +108,12 @@ void GasCoupling::save(const h5::Group& group) const {
   group.write<std::uint64_t>("fluid_steps", {times_.steps});
   group.write<std::uint64_t>("unconverged_steps", {times_.unconverged_steps});
   group.write<double>("wall_seconds", {times_.mapping, times_.solve, times_.interpolation});
+  if (settings_.spin_forces.any()) {
+    std::vector<double> u(3 * particle_gas_velocity_.size());
+    for (std::size_t i = 0; i < particle_gas_velocity_.size(); ++i)
+      for (int k = 0; k < 3; ++k) u[3 * i + k] = particle_gas_velocity_[i][k];
+    group.write("particle_gas_velocity", u, {particle_gas_velocity_.size(), 3});
+  }
 }
 
 void GasCoupling::restore(const h5::Group& group) {
@@ -146,6 +155,17 @@ void GasCoupling::restore(const h5::Group& group) {
       read_exactly<std::uint64_t>(group, "unconverged_steps", {1}, "one count");
   const std::vector<double> seconds =
       read_exactly<double>(group, "wall_seconds", {3}, "mapping, solve, interpolation");
+  std::vector<Vec3> particle_u;
+  if (settings_.spin_forces.any()) {
+    const std::string name = "particle_gas_velocity";
+    const hsize_t rows = group.contains(name) && !group.open_dataset(name).shape().empty()
+                             ? group.open_dataset(name).shape()[0]
+                             : 0;
+    const std::vector<double> u = read_exactly<double>(
+        group, name, {rows, 3}, "one row per particle (the scene's spin forces need it)");
+    particle_u.resize(rows);
+    for (std::size_t i = 0; i < rows; ++i) particle_u[i] = Vec3(u[3 * i], u[3 * i + 1], u[3 * i + 2]);
+  }
 
   // Everything is read and checked: only now does the state change.
   solver_->set_state(std::move(gas));
@@ -165,6 +185,7 @@ void GasCoupling::restore(const h5::Group& group) {
   times_.mapping = seconds[0];
   times_.solve = seconds[1];
   times_.interpolation = seconds[2];
+  particle_gas_velocity_ = std::move(particle_u);
 }
 
 }  // namespace carom

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "morsi_alexander.hpp"
+
 namespace carom {
 
 namespace {
@@ -30,9 +32,10 @@ double solve_increasing(Function f, double guess) {
 }
 }  // namespace
 
-const std::array<std::string_view, 7>& drag_closure_names() {
-  static const std::array<std::string_view, 7> names{
-      "schiller_naumann", "ergun", "wen_yu", "gidaspow", "gidaspow_blend", "beetstra", "di_felice"};
+const std::array<std::string_view, 8>& drag_closure_names() {
+  static const std::array<std::string_view, 8> names{
+      "schiller_naumann", "ergun",     "wen_yu",         "gidaspow",
+      "gidaspow_blend",   "beetstra",  "di_felice",      "morsi_alexander"};
   return names;
 }
 
@@ -238,6 +241,8 @@ double DragClosure::drag_coefficient(const DragInput& in) const {
       return beetstra_drag(in);
     case DragClosureKind::DiFelice:
       return di_felice_drag(in);
+    case DragClosureKind::MorsiAlexander:
+      return morsi_alexander_drag(in);
   }
   return 0.0;
 }

@@ -28,10 +28,11 @@ enum class DragClosureKind {
   GidaspowBlend,    ///< "gidaspow_blend": arctan blend of the two (Lathouwers & Bellan 2000).
   Beetstra,         ///< "beetstra": Beetstra, van der Hoef & Kuipers (2007), polydisperse.
   DiFelice,         ///< "di_felice": Di Felice (1994) voidage function eps^-chi(Re).
+  MorsiAlexander,   ///< "morsi_alexander": single sphere, no porosity (fluid/morsi_alexander.hpp).
 };
 
 /// The scene names of the closures, in DragClosureKind order.
-const std::array<std::string_view, 7>& drag_closure_names();
+const std::array<std::string_view, 8>& drag_closure_names();
 /// The scene name of a closure.
 std::string_view drag_closure_name(DragClosureKind kind);
 /// The closure called `name`; throws std::invalid_argument listing the allowed names.

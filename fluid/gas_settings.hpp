@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drag.hpp"
+#include "spin_forces.hpp"
 
 namespace carom {
 
@@ -47,6 +48,7 @@ struct GasSettings {
       0.4;                       ///< eps_mf of the Richardson-Zaki exponent (schiller_naumann).
   double min_porosity = 0.2;     ///< Porosity floor of the mapping (round-off in packed cells).
   std::array<GasSide, 6> sides;  ///< x_low, x_high, y_low, y_high, z_low, z_high.
+  SpinForceSettings spin_forces;  ///< Magnus lift and rotational torque (kick flights only).
 };
 
 /// The names of the six sides, in GasSettings::sides order.

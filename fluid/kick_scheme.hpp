@@ -16,12 +16,26 @@
 /// overshoots the gas velocity by more than it closes, and velocities grow without bound. That
 /// failure is shown, not hidden: check_stability throws KickUnstable, naming the particle and the
 /// remedies (the `relax` flight, exact for any step; or a smaller flight.particle_step).
+///
+/// Spin forces (fluid/spin_forces.hpp), when a scene asks for them, are kicks of the same kind:
+/// at each kick, from the velocity and spin of that moment and the gas velocity u_i frozen at
+/// the fluid step,
+///   v_i <- v_i + dt_p F_L(u_i - v_i, Omega_rel) / m_i,   w_i <- w_i + dt_p T(Omega_rel) / I_i,
+/// with Omega_rel = -w_i (carom resolves no gas vorticity at the particle's scale). Drag, lift
+/// and torque all use the state before the kick (one explicit Euler step of the whole force
+/// system), so the scheme stays first order in dt_p. The torque kick is stable while
+/// dt_p |T| / (I |Omega_rel|) <= 2 (the secant decay rate of the spin): beyond it a kick
+/// reverses the spin by more than it had, and check_stability refuses it as it refuses the drag.
+/// Gas work: the kick scheme books none (Energies::gas_work stays 0 for kick flights), neither
+/// the drag's nor the lift's or torque's; the lift is perpendicular to u - v, so in gas at rest
+/// it does no work, and the torque only removes rotational energy.
 #include <stdexcept>
 #include <vector>
 
 #include "core/particles.hpp"
 #include "core/relax_flight.hpp"
 #include "core/vec3.hpp"
+#include "spin_forces.hpp"
 
 namespace carom {
 
@@ -31,26 +45,43 @@ class KickUnstable : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The spin forces a kick applies and the gas properties they need.
+struct SpinForceKicks {
+  SpinForceSettings models;       ///< Which lift and torque (none by default).
+  double gas_density = 1.2;       ///< rho_g, kg/m^3.
+  double gas_viscosity = 1.8e-5;  ///< mu_g, Pa s.
+};
+
 /// Explicit drag and pressure-gradient kicks every particle step (see the file comment).
 class KickScheme {
  public:
-  /// `particle_step`: dt_p, s (> 0); `gravity`: g of the ballistic flights between kicks, m/s^2.
-  KickScheme(double particle_step, const Vec3& gravity)
-      : particle_step_(particle_step), gravity_(gravity) {}
+  /// `particle_step`: dt_p, s (> 0); `gravity`: g of the ballistic flights between kicks, m/s^2;
+  /// `spin`: the spin forces to kick with as well (none by default).
+  KickScheme(double particle_step, const Vec3& gravity, SpinForceKicks spin = {})
+      : particle_step_(particle_step), gravity_(gravity), spin_(spin) {}
 
-  /// Throws KickUnstable when dt_p rate_i > 2 (dt_p > 2 tau_i) for some particle; no change.
+  /// Throws KickUnstable when dt_p rate_i > 2 (dt_p > 2 tau_i) for some particle, or when the
+  /// torque's secant decay rate times dt_p exceeds 2 (torque on); no change.
   void check_stability(const ParticleStore& particles,
                        const std::vector<RelaxFlight>& flights) const;
   /// One kick at a synchronised time: v_i += dt_p (a_i(v_i) - g) for every particle (flights[i]:
-  /// its flight of the current fluid step). Checks stability first (throws KickUnstable).
-  void kick(ParticleStore& particles, const std::vector<RelaxFlight>& flights) const;
+  /// its flight of the current fluid step), plus the spin forces when some are on, which need
+  /// `gas_velocity` (u_i at each particle, frozen at the fluid step, m/s; may be null when the
+  /// spin forces are off). Checks stability first (throws KickUnstable).
+  void kick(ParticleStore& particles, const std::vector<RelaxFlight>& flights,
+            const std::vector<Vec3>* gas_velocity = nullptr) const;
+  /// The spin-force input of particle i with gas velocity u (Omega_rel = -w_i).
+  SpinForceInput spin_input(const ParticleStore& particles, std::size_t i, const Vec3& u) const;
 
   /// dt_p, the time between kicks, s.
   double particle_step() const { return particle_step_; }
+  /// The spin forces kicked with.
+  const SpinForceKicks& spin_forces() const { return spin_; }
 
  private:
   double particle_step_;
   Vec3 gravity_;
+  SpinForceKicks spin_;
 };
 
 }  // namespace carom

@@ -16,7 +16,11 @@ std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene
     gas->prepare(sim.system().particles);  // porosity at t = 0 for the first outputs
   GasCoupling* coupling = gas.get();
   const bool kick = scene.flight.model == FlightModel::Kick;
-  const KickScheme kicks(scene.flight.particle_step, system.flight.gravity);
+  // Spin forces (gas.magnus_lift, gas.rotational_torque) are kicks too: the scene allows them
+  // only with kick flights (scenarios/scene/gas_scene.cpp says why).
+  const KickScheme kicks(scene.flight.particle_step, system.flight.gravity,
+                         SpinForceKicks{scene.gas.spin_forces, scene.gas.density,
+                                        scene.gas.viscosity});
   // The fluid step comes first in the calendar, so at a common time the kick uses the new drag.
   sim.add_synchronising_action("fluid_step", sim.time(), scene.gas.time_step,
                                [coupling, kick, kicks](GlobalStep& step) {
@@ -26,7 +30,9 @@ std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene
   if (kick)
     sim.add_synchronising_action(
         "drag_kick", sim.time(), kicks.particle_step(),
-        [kicks](GlobalStep& step) { kicks.kick(step.particles, step.flights); });
+        [kicks, coupling](GlobalStep& step) {
+          kicks.kick(step.particles, step.flights, &coupling->gas_velocity_at_particles());
+        });
   return gas;
 }
 

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "fluid/drag.hpp"
+#include "fluid/spin_forces.hpp"
 
 namespace carom {
 
@@ -12,6 +13,12 @@ namespace {
 /// The drag closures of fluid/drag.hpp, by scene name.
 std::vector<std::string> closure_names() {
   const auto& names = drag_closure_names();
+  return {names.begin(), names.end()};
+}
+
+/// The names of an array of string_views, as the strings TableReader::string checks against.
+template <std::size_t N>
+std::vector<std::string> names_of(const std::array<std::string_view, N>& names) {
   return {names.begin(), names.end()};
 }
 
@@ -95,6 +102,8 @@ void read_flight_and_gas(TableReader& root, Scene& scene) {
     f->finish();
   }
   GasSettings& gas = scene.gas;
+  std::string spin_where;  // where the first spin force was switched on, for the error below
+  std::string spin_key;
   auto g = root.table("gas");
   if (g) {
     gas.coupling = coupling_of(g->string("coupling", "two_way", {"none", "one_way", "two_way"}));
@@ -118,6 +127,15 @@ void read_flight_and_gas(TableReader& root, Scene& scene) {
     gas.min_porosity =
         g->number("min_porosity", gas.min_porosity,
                   Range{0.0, 1.0, true, true, "lowest porosity the mapping gives a cell"});
+    gas.spin_forces.lift = parse_magnus_lift(
+        g->string("magnus_lift", "none", names_of(magnus_lift_names())));
+    gas.spin_forces.torque = parse_rotational_torque(
+        g->string("rotational_torque", "none", names_of(rotational_torque_names())));
+    for (const char* key : {"rotational_torque", "magnus_lift"})
+      if (g->has(key) && g->string(key, "none") != "none") {
+        spin_where = g->where_key(key);
+        spin_key = g->key_path(key);
+      }
     const Domain& d = scene.system.domain;
     auto sides = g->table("boundaries");
     for (int s = 0; s < 6; ++s) {
@@ -149,6 +167,21 @@ void read_flight_and_gas(TableReader& root, Scene& scene) {
         model_where +
         ": flight.model = \"ballistic\" ignores the gas of [gas]; use \"relax\" (exact drag "
         "flights) or \"kick\" (explicit drag kicks), or set gas.coupling = \"none\"");
+  // Spin forces are kicks: a relax flight is the exact solution of a = drive - rate v, linear in
+  // v, which is what makes it analytic and lets the event predictions bound each particle's
+  // velocity on the segment from v0 to the terminal velocity. The lift, |u - v| C_L(Re, Gamma)
+  // (Omega x (u - v)) / |Omega|, is not linear in v, turns the velocity out of that segment and
+  // couples it to a spin that the torque slows non-linearly: no closed-form flight is left and
+  // the contact-time bounds fail. Kick flights take them as explicit impulses every dt_p.
+  if (gas.spin_forces.any() && scene.flight.model != FlightModel::Kick)
+    throw SceneError(spin_where + ": " + spin_key + " needs flight.model = \"kick\" (the spin "
+                     "forces are applied as explicit kicks every flight.particle_step); with \"" +
+                     std::string(scene.flight.model == FlightModel::Relax ? "relax" : "ballistic") +
+                     "\" flights the lift would make the exact flight non-analytic (it is not "
+                     "linear in the velocity and turns it off the path the event predictions "
+                     "bound). Set [flight] model = \"kick\" (methods event_driven and "
+                     "monte_carlo; soft spheres take no spin forces), or " + spin_key +
+                     " = \"none\"");
   if (scene.flight.model == FlightModel::Kick && scene.flight.particle_step == 0.0)
     scene.flight.particle_step = gas.time_step;
   // Kick flights are ballistic between the kicks (the kicks are the gas coupling's).

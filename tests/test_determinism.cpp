@@ -80,6 +80,28 @@ TEST(Determinism, RestoredStateContinuesBitForBit) {
   expect_identical(uninterrupted.state(), restored.state());
 }
 
+// A damaged checkpoint whose saved grid cell lies outside the grid (the fuzzer's find: it
+// crashed the restore by indexing past the cell lists) is refused with what is wrong, on every
+// axis and both sides; the undamaged state restores.
+TEST(Determinism, RestoreRefusesACellOutsideTheGrid) {
+  const System system = rough_mixture();
+  EventDrivenEngine sim(system);
+  sim.run_until(0.5);
+  const EngineState saved = sim.state();
+  EXPECT_NO_THROW(EventDrivenEngine(system, EventDrivenOptions{}, saved));
+  for (int axis = 0; axis < 3; ++axis)
+    for (int bad : {-1, 1 << 20}) {
+      EngineState damaged = saved;
+      damaged.cells[3][axis] = bad;
+      try {
+        EventDrivenEngine restored(system, EventDrivenOptions{}, damaged);
+        ADD_FAILURE() << "cell " << bad << " on axis " << axis << " was accepted";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("is outside its grid level"), std::string::npos) << e.what();
+      }
+    }
+}
+
 // The same with walls, gravity and the TC model (a slab one grid cell high).
 TEST(Determinism, RestoredStateContinuesBitForBitWithWallsAndGravity) {
   test::expect_finishes(20, [] {

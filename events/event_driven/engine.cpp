@@ -104,7 +104,19 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
                      [&](auto a, auto b) { return state.places[a] > state.places[b]; });
   else if (!state.places.empty())
     throw std::invalid_argument("saved state: the cell-list places do not hold one entry per particle");
-  for (std::int32_t i : order) grid_.insert_at(i, state.cells[i]);
+  for (std::int32_t i : order) {
+    // A damaged checkpoint's cell would index outside the grid's lists (found by fuzzing).
+    const std::array<int, 3>& cell = state.cells[i];
+    const std::array<int, 3>& cells = grid_.levels()[grid_.level_of(i)].cells;
+    for (int k = 0; k < 3; ++k)
+      if (cell[k] < 0 || cell[k] >= cells[k])
+        throw std::invalid_argument("saved state: particle " + std::to_string(system_.particles.id[i]) +
+                                    "'s cell (" + std::to_string(cell[0]) + ", " + std::to_string(cell[1]) +
+                                    ", " + std::to_string(cell[2]) + ") is outside its grid level of " +
+                                    std::to_string(cells[0]) + " x " + std::to_string(cells[1]) + " x " +
+                                    std::to_string(cells[2]) + " cells: the checkpoint is damaged");
+    grid_.insert_at(i, cell);
+  }
   flight_kind_ = options_.flight_model == FlightModel::Relax ? Flights::Relax
                  : system_.flight.has_gravity()              ? Flights::Gravity
                                                              : Flights::Straight;

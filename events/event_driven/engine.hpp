@@ -268,6 +268,7 @@ class EventDrivenEngine final : public CollisionMethod {
   double time_ = 0;                      ///< Time of the last processed event, s.
   double last_particle_event_ = 0;       ///< Time of the last processed particle event, s.
   RunStatistics statistics_;
+  TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }
   StallDetector stall_;
   std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.
   double horizon_ = kNever;                    ///< Relax: no prediction reaches past this, s.

@@ -13,9 +13,13 @@ tagged_mean_force) and summary.json (wall_seconds, analysis.tagged_bodies), and 
   cloud_drag_force.png     the mean collision force along z per sample window against time, mean
                            over the runs, beside Syamlal's solid-solid drag (below) evaluated at
                            the measured mean velocity;
-and prints a Markdown table per label: k of 1/V = 1/V0 + k t (mean and standard deviation over
-the runs, and the mean of the fits' own standard errors), the equivalent drag coefficient
-C_D = F / (rho_bulk A V^2 / 2) = (4/3) rho_b D k / (phi rho_s), Syamlal's k, wall time.
+and prints a Markdown table per label: k of 1/V = 1/V0 + k t over the whole record (carom's
+summary.json fit: mean and standard deviation over the runs, and the mean of the fits' own
+standard errors) and over the first EARLY seconds only (the same least squares, here), the
+equivalent drag coefficient C_D = F / (rho_bulk A V^2 / 2) = (4/3) rho_b D k / (phi rho_s) of
+each, the drag's own k = -F / (m V^2) in the first sample window and over the last 4 ms
+(F: the window-mean collision force; V: the mean velocity over the same samples), and the wall
+time per run.
 
 Syamlal's solid-solid momentum exchange coefficient (Syamlal 1987, as MFiX states and codes it:
 "Summary of MFIX Equations 2005-4", Benyahia, Syamlal & O'Brien, section D "Solids/solids
@@ -46,6 +50,7 @@ import numpy as np  # noqa: E402
 D, RHO_B = 3.6e-3, 500.0       # big sphere: m, kg/m^3
 d, RHO_S = 0.3e-3, 2500.0      # cloud: m, kg/m^3
 PHI, E, MU = 0.05, 0.7, 0.3    # solid fraction, restitution, friction
+EARLY = 5e-3                   # s: the early window of the second fit
 
 
 def syamlal_k():
@@ -61,6 +66,12 @@ def syamlal_k():
 def drag_coefficient(k):
     """C_D of F = C_D rho_bulk A V^2 / 2 from F = m k V^2."""
     return 4.0 / 3.0 * RHO_B * D * k / (PHI * RHO_S)
+
+
+def fit_k(t, v):
+    """Least-squares slope k of 1/V = a + k t (V > 0), as scenarios/analysis/drag_fit.cpp."""
+    keep = v > 0
+    return np.polyfit(t[keep], 1.0 / v[keep], 1)[0]
 
 
 def read_run(path):
@@ -101,8 +112,9 @@ def main():
 
     fig_v, ax_v = plt.subplots(figsize=(6.4, 4.2))
     fig_f, ax_f = plt.subplots(figsize=(6.4, 4.2))
-    print("| runs | n | V(end) m/s | k (1/m): mean +- sd over runs | mean fit s.e. | C_D | "
-          "Syamlal k | wall s (mean) |\n|---|---|---|---|---|---|---|---|")
+    print("| runs | n | V(end) m/s, mean +- sd | k (1/m), whole record: mean +- sd over runs | "
+          "mean fit s.e. | C_D | k, first 5 ms | C_D, first 5 ms | -F/(m V^2), first window | "
+          "-F/(m V^2), last 4 ms | wall s per run |\n|---|---|---|---|---|---|---|---|---|---|---|")
     for label, runs in groups.items():
         rows = min(len(r["t"]) for r in runs)
         t = runs[0]["t"][:rows] * 1e3
@@ -111,15 +123,23 @@ def main():
         mean, sd = vz.mean(axis=0), vz.std(axis=0, ddof=1) if len(runs) > 1 else np.zeros(rows)
         line, = ax_v.plot(t, mean, label=f"{label} ({len(runs)} runs)")
         ax_v.fill_between(t, mean - sd, mean + sd, color=line.get_color(), alpha=0.25)
-        f_mean = np.nanmean(fz, axis=0)
+        f_mean = fz.mean(axis=0)  # row 0 (no window yet) is NaN
         ax_f.plot(t[1:], -f_mean[1:] * 1e3, color=line.get_color(), label=f"{label}: measured")
         ax_f.plot(t, k_s * RHO_B * math.pi / 6 * D ** 3 * mean ** 2 * 1e3, "--", color=line.get_color(),
                   label=f"{label}: Syamlal at measured V")
         ks = np.array([r["k"] for r in runs])
-        print(f"| {label} | {len(runs)} | {mean[-1]:.4f} | {ks.mean():.2f} +- "
-              f"{ks.std(ddof=1) if len(runs) > 1 else float('nan'):.2f} | "
-              f"{np.mean([r['k_error'] for r in runs]):.2f} | {drag_coefficient(ks.mean()):.3f} | "
-              f"{k_s:.2f} | {np.mean([r['wall'] for r in runs]):.1f} |")
+        early = np.array([fit_k(r["t"][r["t"] <= EARLY + 1e-12], r["vz"][r["t"] <= EARLY + 1e-12])
+                          for r in runs])
+        spread = (lambda x: x.std(ddof=1)) if len(runs) > 1 else (lambda x: float("nan"))
+        mass = RHO_B * math.pi / 6 * D ** 3
+        late = [r["t"] >= r["t"][-1] - 4e-3 + 1e-12 for r in runs]
+        k_first = np.array([-r["fz"][1] / (mass * r["vz"][:2].mean() ** 2) for r in runs])
+        k_last = np.array([-r["fz"][w].mean() / (mass * r["vz"][w].mean() ** 2) for r, w in zip(runs, late)])
+        print(f"| {label} | {len(runs)} | {mean[-1]:.4f} +- {sd[-1]:.4f} | {ks.mean():.2f} +- "
+              f"{spread(ks):.2f} | {np.mean([r['k_error'] for r in runs]):.2f} | "
+              f"{drag_coefficient(ks.mean()):.3f} | {early.mean():.1f} +- {spread(early):.1f} | "
+              f"{drag_coefficient(early.mean()):.3f} | {k_first.mean():.0f} +- {spread(k_first):.0f} | "
+              f"{k_last.mean():.1f} +- {spread(k_last):.1f} | {np.mean([r['wall'] for r in runs]):.1f} |")
     ax_v.set_xlabel("t (ms)")
     ax_v.set_ylabel("V_z of the tagged group (m/s)")
     ax_v.set_title("Big sphere(s) in the cloud: mean +- sd over cloud seeds")
@@ -134,7 +154,7 @@ def main():
     ax_f.grid(alpha=0.3)
     fig_f.tight_layout()
     fig_f.savefig(os.path.join(args.out, "cloud_drag_force.png"), dpi=120)
-    print(f"\nSyamlal: k = {k_s:.3f} 1/m, C_D = {drag_coefficient(k_s):.3f}")
+    print(f"\nSyamlal (e = {E}, C_f = {MU}, phi = {PHI}): k = {k_s:.3f} 1/m, C_D = {drag_coefficient(k_s):.3f}")
 
 
 if __name__ == "__main__":

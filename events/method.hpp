@@ -119,6 +119,15 @@ class CollisionMethod {
   /// counts a collision when a contact begins), impulses, virial, dissipated energy, events
   /// (time-stepped: steps).
   virtual const RunStatistics& statistics() const = 0;
+  /// Tags the particles with these ids (tagged bodies): from now on the collision impulse on
+  /// each, by partner species and wall, is booked where the method resolves collisions
+  /// (statistics().tagged). A resumed method is tagged again with the same ids and keeps its
+  /// books. Throws std::invalid_argument for an unknown or repeated id, or ids that differ from
+  /// a saved state's.
+  virtual void tag_bodies(const std::vector<std::uint64_t>& ids) {
+    tagged_impulses().tag(ids, system().particles.id, system().species.size(),
+                          system().walls.size());
+  }
   /// What the method measures beyond statistics() (none for the event-driven method).
   virtual std::vector<MethodQuantity> quantities() const { return {}; }
 
@@ -126,6 +135,10 @@ class CollisionMethod {
   /// the dynamic state, counters and clocks; the scene supplies the rest again. The group's
   /// attributes "method" and "time" hold kind() and time().
   virtual void save_state(const h5::Group& group) const = 0;
+
+ protected:
+  /// The tagged bodies' books inside the method's counters (statistics().tagged).
+  virtual TaggedImpulses& tagged_impulses() = 0;
 };
 
 }  // namespace carom

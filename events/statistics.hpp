@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "events/tagged_impulses.hpp"
+
 namespace carom {
 
 struct RunStatistics {
@@ -27,6 +29,8 @@ struct RunStatistics {
   std::uint64_t pair_events = 0;       ///< Pair collisions.
   std::uint64_t wall_events = 0;       ///< Wall collisions.
   std::uint64_t cell_crossings = 0;    ///< Neighbour-grid cell crossings.
+  /// Collision impulses on the tagged bodies, by partner (kept by resize).
+  TaggedImpulses tagged;
 
   void resize(std::size_t species, std::size_t walls) {
     species_count = species;

@@ -25,6 +25,30 @@ void write_statistics(const h5::Group& stats, const RunStatistics& st) {
               flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
               {st.wall_impulse.size(), 3});
   stats.write("virial", row_major(st.virial), {3, 3});
+  write_tagged(stats, st.tagged);
+}
+
+void write_tagged(const h5::Group& stats, const TaggedImpulses& tagged) {
+  if (tagged.ids.empty()) return;
+  const h5::Group group = stats.create_group("tagged");
+  group.set_attribute("species_count", static_cast<std::uint64_t>(tagged.species_count));
+  group.set_attribute("wall_count", static_cast<std::uint64_t>(tagged.wall_count));
+  group.write("id", tagged.ids);
+  group.write("impulse", flatten(tagged.impulse), {tagged.impulse.size(), 3});
+  group.write("step_force", flatten(tagged.step_force), {tagged.step_force.size(), 3});
+}
+
+TaggedImpulses read_tagged(const h5::Group& stats) {
+  TaggedImpulses tagged;
+  if (!stats.contains("tagged")) return tagged;
+  const h5::Group group = stats.open_group("tagged");
+  tagged.species_count = group.attribute<std::uint64_t>("species_count");
+  tagged.wall_count = group.attribute<std::uint64_t>("wall_count");
+  tagged.ids = group.read<std::uint64_t>("id");
+  const std::size_t entries = tagged.ids.size() * tagged.partners();
+  tagged.impulse = unflatten(group.read<double>("impulse", {entries, 3}));
+  tagged.step_force = unflatten(group.read<double>("step_force", {entries, 3}));
+  return tagged;
 }
 
 RunStatistics read_statistics(const h5::Group& stats) {
@@ -44,6 +68,7 @@ RunStatistics read_statistics(const h5::Group& stats) {
   const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
   st.wall_impulse.assign(impulse.begin(), impulse.end());
   st.virial = from_row_major(stats.read<double>("virial", {3, 3}));
+  st.tagged = read_tagged(stats);
   return st;
 }
 

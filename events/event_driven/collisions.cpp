@@ -49,6 +49,7 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
   ++statistics_.pair_events;
   statistics_.virial += dr * outcome.impulse.transpose();
   statistics_.dissipated_energy += outcome.dissipated;
+  if (statistics_.tagged.any()) statistics_.tagged.book_pair(i, j, si, sj, outcome.impulse);
   ++counter_[i];
   ++counter_[j];
   predict<Flight>(i);
@@ -83,6 +84,7 @@ void EventDrivenEngine::collide_wall(std::int32_t i, std::int32_t w, double t) {
   ++statistics_.wall_events;
   statistics_.wall_impulse[w] -= outcome.impulse;
   statistics_.dissipated_energy += outcome.dissipated;
+  if (statistics_.tagged.any()) statistics_.tagged.book_wall(i, w, outcome.impulse);
   ++counter_[i];
   predict<Flight>(i);
   book_collision(i, t, -1 - w);

@@ -278,6 +278,7 @@ class EventDrivenEngine final : public CollisionMethod {
   double time_ = 0;                      ///< Time of the last processed event, s.
   double last_particle_event_ = 0;       ///< Time of the last processed particle event, s.
   RunStatistics statistics_;
+  TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }
   StallDetector stall_;
   RateMonitor rate_;
   std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.

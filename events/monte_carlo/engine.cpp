@@ -146,7 +146,7 @@ void MonteCarloEngine::commit_step() {
   travelling_ = start_travelling_;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1]; ++k)
-      book(log_[k], p.species[i], statistics_, travelling_);
+      book(log_[k], i, p.species[i], statistics_, travelling_);
   derive_pair_counts(statistics_, travelling_);
   ++statistics_.events;
   bound_exceeded_ += step_bound_exceeded_;
@@ -172,7 +172,7 @@ void MonteCarloEngine::present(double t) {
     p.clock[i] = step_start_;
     for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1] && log_[k].time <= t; ++k) {
       const StepEvent& e = log_[k];
-      book(e, p.species[i], statistics_, travelling_);
+      book(e, i, p.species[i], statistics_, travelling_);
       p.position[i] = e.position;
       p.velocity[i] = e.velocity;
       p.spin[i] = e.spin;
@@ -182,7 +182,7 @@ void MonteCarloEngine::present(double t) {
   derive_pair_counts(statistics_, travelling_);
 }
 
-void MonteCarloEngine::book(const StepEvent& e, std::uint32_t s, RunStatistics& st,
+void MonteCarloEngine::book(const StepEvent& e, std::size_t i, std::uint32_t s, RunStatistics& st,
                             std::vector<std::uint64_t>& travelling) const {
   st.dissipated_energy += e.dissipated;
   if (e.partner < 0) {
@@ -190,9 +190,14 @@ void MonteCarloEngine::book(const StepEvent& e, std::uint32_t s, RunStatistics& 
     ++st.wall_collisions[s * st.wall_count + w];
     ++st.wall_events;
     st.wall_impulse[w] -= e.impulse;
+    if (st.tagged.any()) st.tagged.book_wall(static_cast<std::int32_t>(i), w, e.impulse);
     return;
   }
   const std::size_t t = static_cast<std::size_t>(e.partner), species = st.species_count;
+  // The fictitious partner is no particle: only the travelling particle's impulse is booked.
+  if (st.tagged.any())
+    st.tagged.book_pair(static_cast<std::int32_t>(i), -1, s, static_cast<std::uint32_t>(t),
+                        e.impulse);
   ++travelling[s * species + t];
   const double half_impulse = 0.5 * e.impulse.norm();
   st.pair_impulse[s * species + t] += half_impulse;

@@ -99,6 +99,12 @@ class MonteCarloEngine final : public CollisionMethod {
   /// events: steps completed; pair_events: half the travelling collisions.
   const RunStatistics& statistics() const override { return statistics_; }
   std::vector<MethodQuantity> quantities() const override;
+  /// Tags the bodies in the shown counters and in those of the step start (a step is booked
+  /// from there).
+  void tag_bodies(const std::vector<std::uint64_t>& ids) override {
+    CollisionMethod::tag_bodies(ids);
+    start_statistics_.tagged = statistics_.tagged;
+  }
   void save_state(const h5::Group& group) const override { write_monte_carlo_state(group, state()); }
 
   MonteCarloState state() const;
@@ -133,7 +139,7 @@ class MonteCarloEngine final : public CollisionMethod {
   /// Shows the computed step at time t (inside it): delayed states and counters.
   void present(double t);
   /// Adds one logged event of a particle of species s to the counters.
-  void book(const StepEvent& event, std::uint32_t s, RunStatistics& statistics,
+  void book(const StepEvent& event, std::size_t i, std::uint32_t s, RunStatistics& statistics,
             std::vector<std::uint64_t>& travelling) const;
   /// Sets the symmetric pair counts and pair_events from the directed counts.
   void derive_pair_counts(RunStatistics& statistics, const std::vector<std::uint64_t>& travelling) const;
@@ -172,6 +178,7 @@ class MonteCarloEngine final : public CollisionMethod {
 
   RunStatistics statistics_;       ///< As shown at time_.
   RunStatistics start_statistics_;  ///< At step_start_.
+  TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }
   std::vector<std::uint64_t> travelling_, start_travelling_;
   double max_collisions_per_step_ = 0;
   std::uint64_t bound_exceeded_ = 0;       ///< Committed steps.

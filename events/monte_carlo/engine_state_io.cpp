@@ -4,6 +4,7 @@
 
 #include "core/hdf5_arrays.hpp"
 #include "events/monte_carlo/engine.hpp"
+#include "events/statistics_io.hpp"
 
 namespace carom {
 
@@ -67,6 +68,7 @@ void write_monte_carlo_state(const h5::Group& group, const MonteCarloState& s) {
   stats.write("wall_impulse", flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
               {st.wall_impulse.size(), 3});
   stats.write("virial", row_major(st.virial), {3, 3});
+  write_tagged(stats, st.tagged);
 
   const h5::Group actions = group.create_group("actions");
   std::vector<std::string> names;
@@ -129,6 +131,7 @@ MonteCarloState read_monte_carlo_state(const h5::Group& group) {
   const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
   st.wall_impulse.assign(impulse.begin(), impulse.end());
   st.virial = from_row_major(stats.read<double>("virial", {3, 3}));
+  st.tagged = read_tagged(stats);
 
   const h5::Group actions = group.open_group("actions");
   const std::vector<std::string> names = actions.read_strings("name");

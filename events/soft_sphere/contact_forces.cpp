@@ -100,6 +100,9 @@ void SoftSphereEngine::compute_forces(double dt) {
   const std::size_t S = system_.species.size(), W = system_.walls.size();
   double elastic = 0.0, dissipated = 0.0;
   lossy_.clear();
+  TaggedImpulses& tagged = statistics_.tagged;
+  std::fill(tagged.step_force.begin(), tagged.step_force.end(), Vec3::Zero());
+  const std::size_t C = S + W;
   for (PairContactState& c : list_.pairs()) {
     const std::int32_t i = c.owner, j = c.partner;
     Vec3 d = p.position[i] - p.position[j];
@@ -143,6 +146,12 @@ void SoftSphereEngine::compute_forces(double dt) {
                                          c.overlap, dt);
     force_[i] += f.force;
     force_[j] -= f.force;
+    if (tagged.any()) {
+      if (const std::int32_t k = tagged.slot_of[i]; k >= 0)
+        tagged.step_force[k * C + sj] += f.force;
+      if (const std::int32_t k = tagged.slot_of[j]; k >= 0)
+        tagged.step_force[k * C + si] -= f.force;
+    }
     torque_[i] += f.torque1;
     torque_[j] += f.torque2;
     elastic += f.elastic;
@@ -180,6 +189,9 @@ void SoftSphereEngine::compute_forces(double dt) {
     const ContactForce f = contact_force(wall_contact(s, c.wall), n, delta, g, p.spin[i], a, 0.0,
                                          inverse_inertia_[i], 0.0, c.spring, c.overlap, dt);
     force_[i] += f.force;
+    if (tagged.any())
+      if (const std::int32_t k = tagged.slot_of[i]; k >= 0)
+        tagged.step_force[k * C + S + c.wall] += f.force;
     torque_[i] += f.torque1;
     elastic += f.elastic;
     dissipated += f.dissipated - f.spring_energy_change;

@@ -265,9 +265,17 @@ bool SoftSphereEngine::run_until(double t_end) {
   }
 }
 
+void SoftSphereEngine::tag_bodies(const std::vector<std::uint64_t>& ids) {
+  CollisionMethod::tag_bodies(ids);
+  // Before the first step the forces of t = 0 are computed again with the bodies tagged: with
+  // dt = 0 that changes no spring, counter or energy (contacts of t = 0 are already begun).
+  if (steps_ == 0 && statistics_.tagged.any()) compute_forces(0.0);
+}
+
 void SoftSphereEngine::half_kick(double dt) {
   ParticleStore& p = system_.particles;
   const double h = 0.5 * dt;
+  if (statistics_.tagged.any()) statistics_.tagged.book_half_step(h);
   const Vec3 g = system_.flight.gravity;
   const std::size_t n = p.size();
   if (!gas_forces_) {  // gravity alone (no fluid step yet): no drag, no gas work

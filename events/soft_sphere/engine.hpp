@@ -68,6 +68,9 @@ class SoftSphereEngine final : public CollisionMethod {
   Vec3 spin(std::size_t i) const override { return system_.particles.spin[i]; }
   Energies energies() const override;
   const RunStatistics& statistics() const override { return statistics_; }
+  /// Tags the bodies; before the first step, also books the contact forces of t = 0 on them
+  /// (the first half step applies those).
+  void tag_bodies(const std::vector<std::uint64_t>& ids) override;
   std::vector<MethodQuantity> quantities() const override;
   void save_state(const h5::Group& group) const override;
 
@@ -126,6 +129,7 @@ class SoftSphereEngine final : public CollisionMethod {
   std::vector<SteppedAction> actions_;
   std::vector<std::pair<std::string, double>> restored_action_times_;
   RunStatistics statistics_;
+  TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }
   ContactDurations durations_;
   double time_ = 0, time_step_ = 0;
   double shortest_contact_time_ = 0, impact_speed_ = 0;

@@ -87,6 +87,7 @@ std::string RunAnalysis::summary_json(const CollisionMethod& sim) const {
   // What separates the two ways fines can act on the large particles: the gas they see
   // (interstitial velocity, porosity, gas force per weight) and the collision impulse they receive
   // per second from each species, per weight.
+  if (c.tagged.bodies > 0) j << "    \"tagged_bodies\": " << tagged_json(c.tagged) << ",\n";
   j << "    \"mechanism\": {";
   std::vector<std::pair<std::string, double>> mechanism;
   for (std::size_t s = 0; s < S; ++s) {
@@ -191,7 +192,7 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
         << fixed(c.porosity[s]) << " | " << (c.weight[s] > 0 ? fixed(c.gas_force[s][vertical_] / c.weight[s]) : "")
         << " |\n";
   }
-  if (!several) return r.str();
+  if (!several) return r.str() + tagged_report(c.tagged);
   r << "\n| pair (receiver-giver) | collision impulse rate per particle (N) |"
     << (weighed ? " impulse rate / weight (dimensionless) |\n|---|---|---|\n" : "\n|---|---|\n");
   for (std::size_t s = 0; s < S; ++s)
@@ -203,7 +204,7 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
   r << "\nThe impulse rate counts |J| of every collision (a gross rate: impulses in opposite directions do not "
        "cancel), so it measures agitation, not a net force. Compare runs with and without fines (a sweep) to see "
        "which of the two changes with the fines fraction.\n";
-  return r.str();
+  return r.str() + tagged_report(c.tagged);
 }
 
 }  // namespace carom

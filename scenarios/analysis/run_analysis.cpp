@@ -57,7 +57,8 @@ double time_average(const std::vector<double>& times, const std::vector<double>&
   return span > 0.0 ? integral / span : NAN;
 }
 
-/// The analysis series a run file may hold, with their widths for S species.
+/// The analysis series a run file may hold, with their widths for S species (tagged bodies'
+/// series apart).
 std::vector<std::pair<std::string, std::size_t>> series_widths(std::size_t species) {
   return {{"lacey_index", 1},
           {"axial_msd", 1},
@@ -71,8 +72,16 @@ std::vector<std::pair<std::string, std::size_t>> series_widths(std::size_t speci
 
 }  // namespace
 
+std::vector<std::pair<std::string, std::size_t>> RunAnalysis::widths() const {
+  auto all = series_widths(scene_.system.species.size());
+  for (auto& w : tagged_series_widths(tagged_ids_.size(), tagged_partners_)) all.push_back(w);
+  return all;
+}
+
 RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim) : scene_(scene) {
   const System& system = sim.system();
+  tagged_ids_ = sim.statistics().tagged.ids;
+  tagged_partners_ = sim.statistics().tagged.partners();
   const ParticleStore& p = system.particles;
   const std::size_t n = sim.particle_count();
   vertical_ = vertical_axis(system);
@@ -133,7 +142,7 @@ RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim, const s
   std::size_t keep = 0;
   while (keep < times.size() && times[keep] <= resume_time) ++keep;
   times_.assign(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(keep));
-  for (const auto& [name, width] : series_widths(scene.system.species.size())) {
+  for (const auto& [name, width] : widths()) {
     if (!series.contains(name)) continue;
     std::vector<double> values = series.read<double>(name);
     values.resize(std::min(values.size(), keep * width));
@@ -157,6 +166,14 @@ void RunAnalysis::write_setup(const std::string& run_file) const {
   };
   grid("mixing_grid", mixing_grid_);
   grid("field_grid", field_grid_);
+  if (!tagged_ids_.empty()) {
+    // The tagged bodies and the names of their partner categories (species, then walls).
+    group.write("tagged_body_id", tagged_ids_);
+    std::vector<std::string> partners;
+    for (const Species& s : scene_.system.species) partners.push_back(s.name);
+    for (const Wall& w : scene_.system.walls) partners.push_back(w.name);
+    group.write_strings("tagged_partner", partners);
+  }
   file.flush();
 }
 
@@ -168,7 +185,7 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
   // A resumed run writes again what an older checkpoint's run had written: forget those rows.
   while (!times_.empty() && times_.back() >= t) {
     times_.pop_back();
-    for (const auto& [name, width] : series_widths(S)) {
+    for (const auto& [name, width] : widths()) {
       auto found = history_.find(name);
       if (found != history_.end() && found->second.size() >= width)
         found->second.resize(found->second.size() - width);
@@ -236,6 +253,14 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
     row.push_back({"gas_velocity_seen", 3 * S, u});
     row.push_back({"gas_force_mean", 3 * S, f});
     row.push_back({"porosity_seen", S, eps});
+  }
+  if (!tagged_ids_.empty()) {
+    const std::vector<double>& previous = history_["tagged_impulse"];
+    const std::size_t width = 3 * tagged_ids_.size() * tagged_partners_;
+    const bool has_previous = !times_.empty() && previous.size() >= width * times_.size();
+    sample_tagged_bodies(sim,
+                         has_previous ? previous.data() + (times_.size() - 1) * width : nullptr,
+                         has_previous ? times_.back() : t, row);
   }
   times_.push_back(t);
   for (const SeriesColumn& c : row) {
@@ -327,6 +352,12 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
       c.gas_force.push_back(fs);
       c.porosity.push_back(eps != nullptr ? time_average(times_, *eps, S, s) : NAN);
     }
+  }
+  if (!tagged_ids_.empty()) {
+    const auto* v = series("tagged_mean_velocity");
+    const auto* impulse = series("tagged_impulse");
+    if (v != nullptr && impulse != nullptr)
+      c.tagged = conclude_tagged(tagged_ids_, tagged_partners_, times_, *v, *impulse);
   }
   return c;
 }

@@ -243,6 +243,7 @@ int run_scene(Scene scene, const RunOptions& options) {
   std::unique_ptr<CollisionMethod> sim;
   try {
     sim = make_method(scene.system, scene.method);
+    sim->tag_bodies(scene.analysis.tagged_bodies);
   } catch (const std::invalid_argument& e) {
     throw SceneError(scene.file + ": " + e.what());
   }
@@ -285,6 +286,7 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   std::unique_ptr<CollisionMethod> sim;
   try {
     sim = restore_method(scene.system, scene.method, checkpoint.method_state());
+    sim->tag_bodies(scene.analysis.tagged_bodies);
   } catch (const std::exception& e) {
     throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
   }

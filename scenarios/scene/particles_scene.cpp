@@ -15,7 +15,10 @@ void read_listed(TableReader& root, Scene& scene) {
     particle.position = p.required_vector3("position", Range::any("centre, m"));
     particle.velocity = p.vector3("velocity", Vec3::Zero(), Range::any("velocity, m/s"));
     particle.spin = p.vector3("spin", Vec3::Zero(), Range::any("angular velocity, rad/s"));
+    particle.tagged = p.boolean("tagged", false);
     p.finish();
+    // Listed particles take the ids 0, 1, ... in file order.
+    if (particle.tagged) scene.analysis.tagged_bodies.push_back(scene.listed.size());
     scene.listed.push_back(particle);
   }
 }

@@ -49,6 +49,7 @@ struct ListedParticle {
   Vec3 position = Vec3::Zero();  ///< m.
   Vec3 velocity = Vec3::Zero();  ///< m/s.
   Vec3 spin = Vec3::Zero();      ///< rad/s.
+  bool tagged = false;           ///< A tagged body: its velocity and collision force are recorded.
   std::string where;             ///< "file:line".
 };
 
@@ -89,6 +90,8 @@ struct AnalysisSettings {
   /// Cells per axis of the local fields (solid fraction, granular temperature, kinetic-theory
   /// collision frequency) over the whole domain; {0, 0, 0}: cells of about 4 largest diameters.
   std::array<int, 3> field_cells{0, 0, 0};
+  /// Particle ids of the tagged bodies ([[particles]] entries with tagged = true).
+  std::vector<std::uint64_t> tagged_bodies;
 };
 
 struct Scene {

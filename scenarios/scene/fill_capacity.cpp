@@ -86,29 +86,38 @@ void check_shared_regions(const Scene& scene, const std::vector<std::size_t>& co
       equal_diameters &= species.diameter == scene.system.species[sharing.front()].diameter;
       solid += static_cast<double>(counts[s]) * species.volume();
     }
-    const double bound = !equal_diameters ? 1.0 : all_random ? kRandomCloseFraction : kDensestEqualFraction;
+    const double bound = !equal_diameters ? 1.0
+                         : all_random     ? kRandomCloseFraction
+                                          : kDensestEqualFraction;
     const double phi = solid / region.volume();
     if (phi <= bound) continue;
-    std::string message = scene.fills[sharing.back()]->amount_where + ": the fills of region \"" + region.name +
-                          "\" (" + short_number(region.volume()) + " m^3) ask for";
+    std::string message = scene.fills[sharing.back()]->amount_where + ": the fills of region \"" +
+                          region.name + "\" (" + short_number(region.volume()) + " m^3) ask for";
     for (std::size_t k = 0; k < sharing.size(); ++k) {
       const std::size_t s = sharing[k];
       const Fill& fill = *scene.fills[s];
-      message += std::string(k == 0 ? " " : k + 1 == sharing.size() ? " and " : ", ") + std::to_string(counts[s]) +
-                 " particles of species \"" + scene.system.species[s].name + "\" (" + fill.amount_key + " = " +
+      message += std::string(k == 0                    ? " "
+                             : k + 1 == sharing.size() ? " and "
+                                                       : ", ") +
+                 std::to_string(counts[s]) + " particles of species \"" +
+                 scene.system.species[s].name + "\" (" + fill.amount_key + " = " +
                  fill.amount_text + " at " + fill.amount_where + ")";
     }
     message += ", together " + short_number(phi) + " of its volume; ";
     if (!equal_diameters)
-      message += "spheres placed in a region lie inside it without overlapping, so together they can never fill "
-                 "more than all of it";
+      message +=
+          "spheres placed in a region lie inside it without overlapping, so together they can "
+          "never fill more than all of it";
     else if (all_random)
       message += "they have one diameter, and random insertion can never fill more than " +
-                 format_number(kRandomCloseFraction) + " of a region with equal spheres (random close packing)";
+                 format_number(kRandomCloseFraction) +
+                 " of a region with equal spheres (random close packing)";
     else
       message += "they have one diameter, and no arrangement of equal spheres fills more than " +
-                 short_number(kDensestEqualFraction) + " of a region (the fcc packing, pi / sqrt(18))";
-    throw SceneError(message + ". Use fewer particles, a larger region, or put the species in separate regions");
+                 short_number(kDensestEqualFraction) +
+                 " of a region (the fcc packing, pi / sqrt(18))";
+    throw SceneError(
+        message + ". Use fewer particles, a larger region, or put the species in separate regions");
   }
 }
 

@@ -112,8 +112,9 @@ void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
               ? placer->random(index, counts[s], region.lower, region.upper, rng)
               : placer->lattice(index, counts[s], region.lower, region.upper, fill.arrangement == Fill::Arrangement::Fcc);
       if (placer->stopped())
-        throw InterruptedBeforeStart("interrupted while the particles were placed, before the run's t = 0: "
-                                     "nothing was written; run the same command again to start over");
+        throw InterruptedBeforeStart(
+            "interrupted while the particles were placed, before the run's t = 0: "
+            "nothing was written; run the same command again to start over");
       if (placed < counts[s]) {
         const double phi = static_cast<double>(counts[s]) * system.species[s].volume() / region.volume();
         throw SceneError(

@@ -155,8 +155,9 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
     for (const std::size_t i : mine) {
       if (!options.dry_run && actions[i] != CaseAction::Run) continue;
       if (sweep_stop_requested())
-        throw InterruptedBeforeStart("interrupted while the cases were checked (case " + std::to_string(i) + " of " +
-                                     std::to_string(cases.size()) + "): nothing was run");
+        throw InterruptedBeforeStart("interrupted while the cases were checked (case " +
+                                     std::to_string(i) + " of " + std::to_string(cases.size()) +
+                                     "): nothing was run");
       try {
         check_case(spec, cases[i]);
       } catch (const SceneError& e) {

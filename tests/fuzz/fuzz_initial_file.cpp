@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -150,18 +152,27 @@ void write_edited(const SeedFile& seed, const std::string& path, FuzzedDataProvi
   }
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   if (file < 0) return;
+  // CAROM_FUZZ_VERBOSE=1: print the edits an input makes (to read a crash's artifact).
+  static const bool verbose = std::getenv("CAROM_FUZZ_VERBOSE") != nullptr;
   const int edits = input.ConsumeIntegralInRange(0, 6);
   for (int k = 0; k < edits && input.remaining_bytes() > 0; ++k) {
     const int kind = input.ConsumeIntegralInRange(0, 5);
     if (kind <= 2 && !seed.datasets.empty()) {
       const std::string& set =
           seed.datasets[input.ConsumeIntegralInRange<std::size_t>(0, seed.datasets.size() - 1)];
+      if (verbose)
+        std::fprintf(stderr, "edit %d: kind %d (0 element, 1 reshape, 2 delete) of %s\n", k, kind,
+                     set.c_str());
       if (kind == 0) edit_dataset_element(file, set, input);
       if (kind == 1) reshape_dataset(file, set, input);
       if (kind == 2) H5Ldelete(file, set.c_str(), H5P_DEFAULT);
     } else if (kind >= 3 && !seed.attributes.empty()) {
       const auto& attribute =
           seed.attributes[input.ConsumeIntegralInRange<std::size_t>(0, seed.attributes.size() - 1)];
+      if (verbose)
+        std::fprintf(stderr,
+                     "edit %d: kind %d (3 delete, 4 element, 5 text) of attribute %s of %s\n", k,
+                     kind, attribute.name.c_str(), attribute.object.c_str());
       if (kind == 3)
         H5Adelete_by_name(file, attribute.object.c_str(), attribute.name.c_str(), H5P_DEFAULT);
       if (kind == 4) edit_attribute(file, attribute, input, false);

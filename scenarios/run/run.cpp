@@ -290,6 +290,9 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   } catch (const std::exception& e) {
     throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
   }
+  // A later end (--end) writes more: the whole run's output, estimated as for `carom run`, must
+  // fit too, checked before anything is written.
+  check_output_size(scene, estimate_output(scene, sim->system().particles.size()), dir);
   std::optional<h5::Group> saved_gas;
   if (checkpoint.has_gas()) saved_gas = checkpoint.gas_state();
   std::unique_ptr<GasCoupling> gas;

@@ -11,6 +11,9 @@ namespace carom {
 namespace {
 /// Random close packing of equal spheres: the most a random fill can take of its region.
 constexpr double kRandomCloseFraction = 0.64;
+/// The densest packing of equal spheres, pi / sqrt(18) (Kepler's conjecture, proved by Hales
+/// 2005): no arrangement of equal spheres fills more of a region.
+constexpr double kDensestEqualFraction = 0.74048048969306104;
 
 /// Four significant digits: derived numbers in a message.
 std::string short_number(double x) {
@@ -64,6 +67,57 @@ void check_fill_capacities(const Scene& scene, const std::vector<std::size_t>& c
                  std::to_string(capacity) + " fit. Use fewer particles (at most " + std::to_string(capacity) +
                  ") or a larger region";
     throw SceneError(message);
+  }
+  check_shared_regions(scene, counts);
+}
+
+void check_shared_regions(const Scene& scene, const std::vector<std::size_t>& counts) {
+  for (std::size_t r = 0; r < scene.regions.size(); ++r) {
+    std::vector<std::size_t> sharing;
+    for (std::size_t s = 0; s < counts.size(); ++s)
+      if (counts[s] > 0 && scene.fills[s] && scene.fills[s]->region == r) sharing.push_back(s);
+    if (sharing.size() < 2) continue;
+    const Region& region = scene.regions[r];
+    bool all_random = true, equal_diameters = true;
+    double solid = 0.0;
+    for (std::size_t s : sharing) {
+      const Species& species = scene.system.species[s];
+      all_random &= scene.fills[s]->arrangement == Fill::Arrangement::Random;
+      equal_diameters &= species.diameter == scene.system.species[sharing.front()].diameter;
+      solid += static_cast<double>(counts[s]) * species.volume();
+    }
+    const double bound = !equal_diameters ? 1.0
+                         : all_random     ? kRandomCloseFraction
+                                          : kDensestEqualFraction;
+    const double phi = solid / region.volume();
+    if (phi <= bound) continue;
+    std::string message = scene.fills[sharing.back()]->amount_where + ": the fills of region \"" +
+                          region.name + "\" (" + short_number(region.volume()) + " m^3) ask for";
+    for (std::size_t k = 0; k < sharing.size(); ++k) {
+      const std::size_t s = sharing[k];
+      const Fill& fill = *scene.fills[s];
+      message += std::string(k == 0                    ? " "
+                             : k + 1 == sharing.size() ? " and "
+                                                       : ", ") +
+                 std::to_string(counts[s]) + " particles of species \"" +
+                 scene.system.species[s].name + "\" (" + fill.amount_key + " = " +
+                 fill.amount_text + " at " + fill.amount_where + ")";
+    }
+    message += ", together " + short_number(phi) + " of its volume; ";
+    if (!equal_diameters)
+      message +=
+          "spheres placed in a region lie inside it without overlapping, so together they can "
+          "never fill more than all of it";
+    else if (all_random)
+      message += "they have one diameter, and random insertion can never fill more than " +
+                 format_number(kRandomCloseFraction) +
+                 " of a region with equal spheres (random close packing)";
+    else
+      message += "they have one diameter, and no arrangement of equal spheres fills more than " +
+                 short_number(kDensestEqualFraction) +
+                 " of a region (the fcc packing, pi / sqrt(18))";
+    throw SceneError(
+        message + ". Use fewer particles, a larger region, or put the species in separate regions");
   }
 }
 

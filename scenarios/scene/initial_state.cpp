@@ -100,6 +100,7 @@ void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
     } catch (const std::invalid_argument& e) {
       throw SceneError(scene.file + ": domain: " + e.what());
     }
+    placer->set_stop_flag(stop);
     Rng rng(scene.seed);
     for (std::size_t s = 0; s < counts.size(); ++s) {
       if (counts[s] == 0) continue;
@@ -110,6 +111,10 @@ void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
           fill.arrangement == Fill::Arrangement::Random
               ? placer->random(index, counts[s], region.lower, region.upper, rng)
               : placer->lattice(index, counts[s], region.lower, region.upper, fill.arrangement == Fill::Arrangement::Fcc);
+      if (placer->stopped())
+        throw InterruptedBeforeStart(
+            "interrupted while the particles were placed, before the run's t = 0: "
+            "nothing was written; run the same command again to start over");
       if (placed < counts[s]) {
         const double phi = static_cast<double>(counts[s]) * system.species[s].volume() / region.volume();
         throw SceneError(

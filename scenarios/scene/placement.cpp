@@ -70,7 +70,7 @@ std::size_t Placer::random(std::uint32_t s, std::size_t count, const Vec3& lower
   for (; placed < count; ++placed) {
     std::size_t attempt = 0;
     for (;; ++attempt) {
-      if (attempt == attempts_per_particle) return placed;
+      if (attempt == attempts_per_particle || (attempt % 1024 == 0 && stopped())) return placed;
       const Vec3 r(rng.uniform(lo[0], hi[0]), rng.uniform(lo[1], hi[1]), rng.uniform(lo[2], hi[2]));
       if (try_place(s, r)) break;
     }
@@ -143,20 +143,22 @@ std::size_t Placer::lattice(std::uint32_t s, std::size_t count, const Vec3& lowe
     axes[k] = axis_sites(lo[k], hi[k], wraps[k], plan.spacing, fcc);
   }
   std::vector<Vec3> sites;
-  for (long z = 0; z < axes[2].count; ++z)
+  for (long z = 0; z < axes[2].count; ++z) {
+    if (stopped()) return 0;
     for (long y = 0; y < axes[1].count; ++y)
       for (long x = 0; x < axes[0].count; ++x) {
         if (fcc && (x + y + z) % 2 != 0) continue;
         sites.emplace_back(axes[0].first + x * axes[0].step, axes[1].first + y * axes[1].step,
                            axes[2].first + z * axes[2].step);
       }
+  }
   const Vec3& g = system_.flight.gravity;
   if (g.squaredNorm() > 0.0)
     std::stable_sort(sites.begin(), sites.end(), [&](const Vec3& p, const Vec3& q) { return g.dot(p) > g.dot(q); });
   std::size_t placed = 0;
-  for (const Vec3& r : sites) {
-    if (placed == count) break;
-    if (try_place(s, r)) ++placed;
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    if (placed == count || (k % 1024 == 0 && stopped())) break;
+    if (try_place(s, sites[k])) ++placed;
   }
   return placed;
 }

@@ -8,6 +8,7 @@
 ///
 /// Particles read from a previous run (initial.from_file) are in initial_file.hpp, the settling
 /// run (initial.settle_time) in settling.hpp.
+#include <csignal>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,19 +26,26 @@ class Placer {
   /// built (a periodic axis shorter than three diameters).
   Placer(System& system, std::vector<double> radii);
 
+  /// A signal handler's flag (may be null): while it is raised, random() and lattice() stop
+  /// placing and return what they placed so far (a long placement answers a signal at once).
+  void set_stop_flag(const volatile std::sig_atomic_t* stop) { stop_ = stop; }
+  /// True when the stop flag is raised.
+  bool stopped() const { return stop_ != nullptr && *stop_ != 0; }
+
   /// Adds one particle of species s at r (velocity zero) if it fits; returns whether it did.
   bool try_place(std::uint32_t s, const Vec3& r);
 
   /// Random sequential insertion of `count` particles of species s with centres uniform in the
   /// allowed part of [lower, upper]. Gives up after `attempts_per_particle` failed tries in a row
-  /// for one particle; returns how many were placed.
+  /// for one particle, or when the stop flag is raised; returns how many were placed.
   std::size_t random(std::uint32_t s, std::size_t count, const Vec3& lower, const Vec3& upper, Rng& rng,
                      std::size_t attempts_per_particle = 20000);
 
   /// `count` particles on a face-centred cubic (fcc = true) or simple cubic lattice spread over
   /// [lower, upper] as evenly as the count allows; sites that would overlap placed particles or
   /// walls are skipped. With gravity, the lowest sites (along g) fill first. Returns how many
-  /// were placed (fewer than count when the region holds fewer sites at contact spacing).
+  /// were placed (fewer than count when the region holds fewer sites at contact spacing, or when
+  /// the stop flag is raised).
   std::size_t lattice(std::uint32_t s, std::size_t count, const Vec3& lower, const Vec3& upper, bool fcc);
 
   /// The centre range [lo, hi] on axis k for a sphere of radius a in [lower, upper]; `wraps` is set
@@ -50,6 +58,7 @@ class Placer {
   System& system_;
   std::vector<double> radii_;
   HierarchicalGrid grid_;
+  const volatile std::sig_atomic_t* stop_ = nullptr;
 };
 
 /// The centre range [lo, hi] on axis k for a sphere of radius a in [lower, upper] of `domain`;

@@ -141,7 +141,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 /// species order), gives the filled ones their velocities, validates the result (no overlaps,
 /// nothing outside the walls) and, with initial.settle_time, runs the settling and takes its end
 /// state as the initial state at t = 0. Throws SceneError; InterruptedBeforeStart (settling.hpp)
-/// when `stop` (a signal handler's flag, may be null) is raised while it settles.
+/// when `stop` (a signal handler's flag, may be null) is raised while it places the fills or
+/// settles (placement checks it every thousand or so tries, so a long fill stops promptly).
 void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop = nullptr);
 
 /// Number of particles each fill will create (mass fractions resolved), per species.

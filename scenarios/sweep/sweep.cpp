@@ -12,8 +12,10 @@
 #include <iostream>
 #include <sstream>
 
+#include "scenarios/run/output_estimate.hpp"
 #include "scenarios/run/run.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "scenarios/scene/settling.hpp"
 #include "scenarios/sweep/sweep_case.hpp"
 #include "scenarios/sweep/sweep_mpi.hpp"
 #include "scenarios/sweep/sweep_pool.hpp"
@@ -33,15 +35,21 @@ std::string describe_case(const SweepSpec& spec, const SweepCase& c) {
   return (group.empty() ? std::string() : group + ", ") + "seed " + std::to_string(c.seed);
 }
 
-/// Placement and the checks a run makes at its start (`carom check`). Throws SceneError.
+/// The checks a run makes before it starts: the output's size (against the case's folder), the
+/// placement (which a stop signal interrupts: InterruptedBeforeStart) and the method's own.
+/// Throws SceneError.
 void check_case(const SweepSpec& spec, const SweepCase& c) {
   Scene scene = load_scene(spec.scene, c.overrides, c.seed, c.origins);
   try {
-    build_initial_state(scene);
+    check_output_size(scene, estimate_output(scene, planned_particle_count(scene)),
+                      case_directory(spec.out, c.index));
+    build_initial_state(scene, sweep_stop_flag());
     make_method(scene.system, scene.method);  // the checks a run makes at its start
   } catch (const std::invalid_argument& e) {
     throw SceneError(scene.file + ": " + e.what());
   } catch (const SceneError&) {
+    throw;
+  } catch (const InterruptedBeforeStart&) {
     throw;
   } catch (const std::exception& e) {
     throw SceneError(scene.file + ": " + e.what());
@@ -77,6 +85,9 @@ int stage(const SweepRanks& ranks, bool print, const std::string& command, Stage
   int code = 0;
   try {
     body();
+  } catch (const InterruptedBeforeStart& e) {
+    if (print) std::cerr << "carom sweep: " << e.what() << "\n";
+    code = kExitInterrupted;
   } catch (const SceneError& e) {
     if (print) std::cerr << command << ": error: " << e.what() << "\n";
     code = kExitUsage;
@@ -143,6 +154,10 @@ int sweep(const SweepOptions& options, const SweepRanks& ranks) {
     std::string errors;
     for (const std::size_t i : mine) {
       if (!options.dry_run && actions[i] != CaseAction::Run) continue;
+      if (sweep_stop_requested())
+        throw InterruptedBeforeStart("interrupted while the cases were checked (case " +
+                                     std::to_string(i) + " of " + std::to_string(cases.size()) +
+                                     "): nothing was run");
       try {
         check_case(spec, cases[i]);
       } catch (const SceneError& e) {

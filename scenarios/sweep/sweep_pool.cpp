@@ -53,6 +53,10 @@ bool sweep_stop_requested() {
   return g_signals > 0;
 }
 
+const volatile std::sig_atomic_t* sweep_stop_flag() {
+  return &g_signals;
+}
+
 ProcessPool::ProcessPool(std::size_t slots)
     : slots_(slots < 1 ? 1 : slots), executable_(own_executable()) {}
 

@@ -10,6 +10,7 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -66,5 +67,7 @@ class ProcessPool {
 void install_sweep_signal_handlers();
 /// True once SIGINT or SIGTERM reached the sweep: start nothing new.
 bool sweep_stop_requested();
+/// The flag those handlers raise (non-zero after a stop signal), for a placement that checks it.
+const volatile std::sig_atomic_t* sweep_stop_flag();
 
 }  // namespace carom

@@ -18,6 +18,13 @@ namespace {
 #define CAROM_LANES_INLINE inline __attribute__((always_inline))
 using Lanes = double __attribute__((vector_size(32)));
 using Mask = long long __attribute__((vector_size(32)));
+// Lanes a0..a3 b0..b3 picked by four indices: GCC's __builtin_shuffle, clang's
+// __builtin_shufflevector (the fuzzing build uses clang); the same lanes either way.
+#if defined(__clang__)
+#define CAROM_SHUFFLE(a, b, i, j, k, l) __builtin_shufflevector(a, b, i, j, k, l)
+#else
+#define CAROM_SHUFFLE(a, b, i, j, k, l) __builtin_shuffle(a, b, Mask{i, j, k, l})
+#endif
 
 CAROM_LANES_INLINE Lanes load(const double* p) {
   Lanes v;
@@ -29,14 +36,14 @@ CAROM_LANES_INLINE Lanes select(Mask m, Lanes a, Lanes b) { return m ? a : b; }
 
 /// Four records' halves (rows) as four columns: columns[c][k] = rows[k][c].
 CAROM_LANES_INLINE void transpose(const Lanes (&rows)[4], Lanes (&columns)[4]) {
-  const Lanes even01 = __builtin_shuffle(rows[0], rows[1], Mask{0, 4, 2, 6});
-  const Lanes odd01 = __builtin_shuffle(rows[0], rows[1], Mask{1, 5, 3, 7});
-  const Lanes even23 = __builtin_shuffle(rows[2], rows[3], Mask{0, 4, 2, 6});
-  const Lanes odd23 = __builtin_shuffle(rows[2], rows[3], Mask{1, 5, 3, 7});
-  columns[0] = __builtin_shuffle(even01, even23, Mask{0, 1, 4, 5});
-  columns[1] = __builtin_shuffle(odd01, odd23, Mask{0, 1, 4, 5});
-  columns[2] = __builtin_shuffle(even01, even23, Mask{2, 3, 6, 7});
-  columns[3] = __builtin_shuffle(odd01, odd23, Mask{2, 3, 6, 7});
+  const Lanes even01 = CAROM_SHUFFLE(rows[0], rows[1], 0, 4, 2, 6);
+  const Lanes odd01 = CAROM_SHUFFLE(rows[0], rows[1], 1, 5, 3, 7);
+  const Lanes even23 = CAROM_SHUFFLE(rows[2], rows[3], 0, 4, 2, 6);
+  const Lanes odd23 = CAROM_SHUFFLE(rows[2], rows[3], 1, 5, 3, 7);
+  columns[0] = CAROM_SHUFFLE(even01, even23, 0, 1, 4, 5);
+  columns[1] = CAROM_SHUFFLE(odd01, odd23, 0, 1, 4, 5);
+  columns[2] = CAROM_SHUFFLE(even01, even23, 2, 3, 6, 7);
+  columns[3] = CAROM_SHUFFLE(odd01, odd23, 2, 3, 6, 7);
 }
 
 /// Maps one separation component to its nearest image, as Domain::minimum_image.

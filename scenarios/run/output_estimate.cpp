@@ -71,6 +71,10 @@ OutputEstimate estimate_output(const Scene& scene, std::size_t particles) {
   if (gas) values += 11 + 7 * S, series += 4 + 3;
   values += S + S * S + (S > 1 ? 1 : 0) + (mixing ? 2 : 0);
   series += 2 + (S > 1 ? 1 : 0) + (mixing ? 2 : 0);
+  // tagged_bodies.hpp: T bodies, C = S + W partners: position, velocity, force (3 T each),
+  // impulse and force by partner (3 T C each), the group's mean velocity and force (3 each).
+  const double T = static_cast<double>(scene.analysis.tagged_bodies.size());
+  if (T > 0) values += 9 * T + 6 * T * (S + W) + 6, series += 7;
   e.sample_bytes = values * 8;
   const double scene_text = static_cast<double>(scene.text.size());
   e.checkpoint_bytes = n * kCheckpointParticleBytes + cells * kCheckpointGasCellBytes + kFileOverheadBytes + scene_text;

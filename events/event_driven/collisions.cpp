@@ -106,7 +106,7 @@ void EventDrivenEngine::cross_cell(std::int32_t i, int face) {
 }
 
 void EventDrivenEngine::book_collision(std::int32_t i, double t, std::int32_t partner_code) {
-  if (rate_.due(statistics_.pair_events, statistics_.wall_events)) {
+  if (rate_.due(statistics_.pair_events, statistics_.wall_events, t)) {
     const double span = t - rate_.start_time;
     const double frequency =
         rate_.measure(statistics_.pair_events, statistics_.wall_events, t, agenda_.size());

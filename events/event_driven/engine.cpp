@@ -158,6 +158,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
 void EventDrivenEngine::start_rate_monitor(double t) {
   rate_.limit = options_.collapse.collision_frequency_limit();
   rate_.window = std::max<std::uint64_t>(10 * agenda_.size(), 1000);
+  rate_.min_span = rate_.limit > 0.0 ? 5000.0 / rate_.limit : 0.0;
   rate_.start_pairs = statistics_.pair_events;
   rate_.start_walls = statistics_.wall_events;
   rate_.start_time = t;

@@ -20,7 +20,8 @@ struct CollapseOptions {
   /// scale (smallest diameter over a reference speed), chosen when the run starts.
   double stall_window = 0.0;
   /// Lasting contacts: more collisions per particle within one TC contact_time than this,
-  /// averaged over all particles over a window of collisions, stop the run (status
+  /// averaged over all particles over a window of at least 10 collisions per particle and 100
+  /// contact times (5000 collisions per particle at the limit), stop the run (status
   /// "lasting_contacts"). Used with the TC model only (its contact_time is the time scale);
   /// 0 turns it off.
   double max_collisions_per_contact_time = 50.0;

@@ -51,15 +51,14 @@ struct StallDetector {
 
 /// The third test, lasting contacts: the collision frequency per particle, averaged over all
 /// particles over a window of at least `window` collisions (pair and wall events) and at least
-/// `min_span` seconds, above `limit`. Hard
-/// spheres in lasting contact (a packed bed under the TC model, a plug pinned under a lid)
-/// collide ever faster as their gaps close, without bound; no per-particle window catches that
-/// while time still moves on.
+/// `min_span` seconds, above `limit`. Hard spheres in lasting contact (a packed bed under the TC
+/// model, a plug pinned under a lid) collide ever faster as their gaps close; no per-particle
+/// window catches that while time still moves on.
 struct RateMonitor {
   double limit = 0;                  ///< Collisions per particle per second; 0: off.
   std::uint64_t window = 0;          ///< Collision events per measurement, at least.
   /// Simulated time per measurement, at least, s: 5000 / limit, 100 contact times at the default
-  /// (a packed bed rattles in bursts: over 2.5e-5 s its frequency reached 16 times its 5 ms mean).
+  /// (a packed bed rattles in bursts: over 2.5e-5 s its frequency reached 17 times its 5 ms mean).
   double min_span = 0;
   std::uint64_t start_pairs = 0;     ///< Pair collisions at the window's start.
   std::uint64_t start_walls = 0;     ///< Wall collisions at the window's start.

@@ -88,6 +88,7 @@ std::string RunAnalysis::summary_json(const CollisionMethod& sim) const {
   // (interstitial velocity, porosity, gas force per weight) and the collision impulse they receive
   // per second from each species, per weight.
   if (c.tagged.bodies > 0) j << "    \"tagged_bodies\": " << tagged_json(c.tagged) << ",\n";
+  if (c.has_profiles) j << "    \"profiles\": " << profiles_json(profiles_, c.profiles) << ",\n";
   j << "    \"mechanism\": {";
   std::vector<std::pair<std::string, double>> mechanism;
   for (std::size_t s = 0; s < S; ++s) {
@@ -171,7 +172,10 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
   const bool several = S >= 2;
   bool weighed = false;
   for (double w : c.weight) weighed |= w > 0;
-  if (!several && !c.gas) return r.str();
+  // Sections every run may have after the mechanism's.
+  const std::string tail =
+      tagged_report(c.tagged) + (c.has_profiles ? profiles_report(profiles_, c.profiles) : "");
+  if (!several && !c.gas) return r.str() + tail;
   r << "\n## " << (several ? "Mechanism" : "Gas seen by the particles") << "\n\n";
   if (several && c.gas)
     r << "Fines can speed up the mixing of the large particles in two ways. (1) They take pore volume, so the gas "
@@ -192,7 +196,7 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
         << fixed(c.porosity[s]) << " | " << (c.weight[s] > 0 ? fixed(c.gas_force[s][vertical_] / c.weight[s]) : "")
         << " |\n";
   }
-  if (!several) return r.str() + tagged_report(c.tagged);
+  if (!several) return r.str() + tail;
   r << "\n| pair (receiver-giver) | collision impulse rate per particle (N) |"
     << (weighed ? " impulse rate / weight (dimensionless) |\n|---|---|---|\n" : "\n|---|---|\n");
   for (std::size_t s = 0; s < S; ++s)
@@ -204,7 +208,7 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
   r << "\nThe impulse rate counts |J| of every collision (a gross rate: impulses in opposite directions do not "
        "cancel), so it measures agitation, not a net force. Compare runs with and without fines (a sweep) to see "
        "which of the two changes with the fines fraction.\n";
-  return r.str() + tagged_report(c.tagged);
+  return r.str() + tail;
 }
 
 }  // namespace carom

@@ -75,6 +75,7 @@ std::vector<std::pair<std::string, std::size_t>> series_widths(std::size_t speci
 std::vector<std::pair<std::string, std::size_t>> RunAnalysis::widths() const {
   auto all = series_widths(scene_.system.species.size());
   for (auto& w : tagged_series_widths(tagged_ids_.size(), tagged_partners_)) all.push_back(w);
+  if (!profiles_.heights.empty()) all.emplace_back("profile_sums", profiles_.row_width());
   return all;
 }
 
@@ -92,6 +93,19 @@ RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim) : scene
   const bool default_fields = a.field_cells == std::array<int, 3>{0, 0, 0};
   field_grid_ = SampleGrid{system.domain.lower, system.domain.upper,
                            default_fields ? default_field_cells(system) : a.field_cells};
+  if (!a.profiles.heights.empty()) {
+    const ProfileSettings& s = a.profiles;
+    const int third = 3 - vertical_ - s.axis;
+    profiles_ = ProfileGeometry{s.heights,
+                                s.thickness,
+                                vertical_,
+                                s.axis,
+                                s.bins,
+                                system.domain.lower[s.axis],
+                                system.domain.upper[s.axis],
+                                system.domain.upper[third] - system.domain.lower[third],
+                                s.start};
+  }
   if (system.species.size() >= 2) {
     small_ = large_ = 0;
     for (std::size_t s = 1; s < system.species.size(); ++s) {
@@ -174,6 +188,18 @@ void RunAnalysis::write_setup(const std::string& run_file) const {
     for (const Wall& w : scene_.system.walls) partners.push_back(w.name);
     group.write_strings("tagged_partner", partners);
   }
+  if (!profiles_.heights.empty()) {
+    const h5::Group sub = group.create_group("profiles");
+    sub.write("heights", profiles_.heights);
+    sub.set_attribute("thickness", profiles_.thickness);
+    sub.set_attribute("vertical_axis", static_cast<std::int64_t>(profiles_.vertical));
+    sub.set_attribute("bin_axis", static_cast<std::int64_t>(profiles_.axis));
+    sub.set_attribute("bins", static_cast<std::int64_t>(profiles_.bins));
+    sub.set_attribute("lower", profiles_.lower);
+    sub.set_attribute("upper", profiles_.upper);
+    sub.set_attribute("depth", profiles_.depth);
+    sub.set_attribute("start", profiles_.start);
+  }
   file.flush();
 }
 
@@ -253,6 +279,12 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
     row.push_back({"gas_velocity_seen", 3 * S, u});
     row.push_back({"gas_force_mean", 3 * S, f});
     row.push_back({"porosity_seen", S, eps});
+  }
+  if (!profiles_.heights.empty()) {
+    std::vector<Vec3> spin(n);
+    for (std::size_t i = 0; i < n; ++i) spin[i] = sim.spin(i);
+    row.push_back({"profile_sums", profiles_.row_width(),
+                   profile_sums(profiles_, position, velocity, spin, radius)});
   }
   if (!tagged_ids_.empty()) {
     const std::vector<double>& previous = history_["tagged_impulse"];
@@ -358,6 +390,10 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
     const auto* impulse = series("tagged_impulse");
     if (v != nullptr && impulse != nullptr)
       c.tagged = conclude_tagged(tagged_ids_, tagged_partners_, times_, *v, *impulse);
+  }
+  if (const auto* sums = profiles_.heights.empty() ? nullptr : series("profile_sums")) {
+    c.has_profiles = true;
+    c.profiles = conclude_profiles(profiles_, times_, *sums);
   }
   return c;
 }

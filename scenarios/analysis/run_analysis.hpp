@@ -14,7 +14,8 @@
 ///   gas_velocity_seen      S x 3: mean interstitial gas velocity at the species' particles, m/s
 ///   gas_force_mean         S x 3: mean gas force (drag + pressure gradient) on one particle, N
 ///   porosity_seen          S: mean porosity at the species' particles
-/// (the last three with a gas), and with tagged bodies their series (tagged_bodies.hpp). The tags
+/// (the last three with a gas), with tagged bodies their series (tagged_bodies.hpp), and with
+/// [analysis.profiles] the sums of the profiles across sections (section_profiles.hpp). The tags
 /// and start heights are stored in run.h5 /analysis so a resumed run carries on with them; the
 /// whole history is read back, so the conclusions always cover the run from t = 0.
 #include <cmath>
@@ -26,6 +27,7 @@
 #include "fluid/coupling.hpp"
 #include "scenarios/analysis/dispersion.hpp"
 #include "scenarios/analysis/mixing.hpp"
+#include "scenarios/analysis/section_profiles.hpp"
 #include "scenarios/analysis/tagged_bodies.hpp"
 #include "scenarios/scene/scene.hpp"
 
@@ -85,6 +87,8 @@ class RunAnalysis {
     std::vector<Vec3> gas_velocity, gas_force;  ///< S: time averages, m/s and N.
     std::vector<double> porosity;               ///< S: time average.
     TaggedConclusions tagged;                   ///< Tagged bodies (bodies = 0: none).
+    bool has_profiles = false;                  ///< Profiles across sections measured.
+    ProfileConclusions profiles;
   };
   Conclusions conclude(const CollisionMethod& sim) const;
 
@@ -98,6 +102,7 @@ class RunAnalysis {
   std::int32_t small_ = -1, large_ = -1;  ///< Smallest and largest species (segregation).
   std::vector<std::uint64_t> tagged_ids_;  ///< Tagged bodies' particle ids (slot order).
   std::size_t tagged_partners_ = 0;        ///< Their partner categories: S species + W walls.
+  ProfileGeometry profiles_;               ///< Profiles across sections (no heights: none).
   /// Every series this run may write and its width.
   std::vector<std::pair<std::string, std::size_t>> widths() const;
   /// Every series sampled so far (since t = 0), by name, row after row.

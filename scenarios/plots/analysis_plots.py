@@ -9,6 +9,9 @@
   RUN_collisions.png  collision frequency per particle of every species pair, measured exactly
                    at the events beside kinetic theory from the local fields; the granular
                    temperature of each species and the segregation index against time.
+  RUN_profiles.png (runs with [analysis.profiles]) across each section: the solid fraction,
+                   the mean of the vertical and the cross velocity component with bands of one
+                   standard deviation, and the mean spin about the third axis.
 The fitted numbers come from summary.json beside the run file (its "analysis" object).
 """
 import json
@@ -178,6 +181,46 @@ def plot_collisions(run, run_path, path, dpi):
     plt.close(fig)
 
 
+def plot_profiles(run, run_path, path, dpi):
+    profiles = read_summary(run_path).get("profiles")
+    if not profiles:
+        return
+    axes_names = "xyz"
+    across, up = profiles["axis"], profiles["vertical"]
+    a, v = axes_names.index(across), axes_names.index(up)
+    third = 3 - a - v
+    x = np.asarray(profiles["bin_centres"], dtype=float) * 1e3
+    nan = lambda values: np.array([np.nan if u is None else u for u in values], dtype=float)  # noqa: E731
+    fig, axes = plt.subplots(1, 4, figsize=(15, 3.8))
+    for k, section in enumerate(profiles["sections"]):
+        colour = f"C{k}"
+        label = f"{up} = {section['height'] * 1e3:.4g} mm"
+        axes[0].plot(x, nan(section["solid_fraction"]), "o-", color=colour, label=label)
+        mean = np.array([nan(m) for m in section["mean_velocity"]])
+        spread = np.array([nan(m) for m in section["std_velocity"]])
+        for ax, c in ((axes[1], v), (axes[2], a)):
+            ax.plot(x, mean[:, c], "o-", color=colour, label=label)
+            ax.fill_between(x, mean[:, c] - spread[:, c], mean[:, c] + spread[:, c], color=colour,
+                            alpha=0.15, lw=0)
+        spin = np.array([nan(m) for m in section["mean_spin"]])
+        axes[3].plot(x, spin[:, third], "o-", color=colour, label=label)
+    axes[0].set_ylabel("solid fraction")
+    axes[1].set_ylabel(f"$v_{up}$ (m/s): mean, band $\\pm$ one std")
+    axes[2].set_ylabel(f"$v_{across}$ (m/s): mean, band $\\pm$ one std")
+    axes[3].set_ylabel(f"mean spin $\\omega_{axes_names[third]}$ (rad/s)")
+    for ax in axes:
+        ax.set_xlabel(f"{across} (mm)")
+    axes[0].set_ylim(bottom=0)
+    axes[0].legend(fontsize=8)
+    window = (f"{profiles['samples']} samples, t = {profiles['first']:.3g} to {profiles['last']:.3g} s"
+              if profiles["samples"] else "no samples in the window")
+    fig.suptitle(f"Profiles across sections {profiles['thickness'] * 1e3:.3g} mm thick ({window})",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+
+
 def analysis_figures(run, run_path):
     """(name, draw(path, dpi)) for each analysis figure this run file supports."""
     figures = []
@@ -186,4 +229,6 @@ def analysis_figures(run, run_path):
         figures.append(("mixing", lambda p, dpi: plot_mixing(run, run_path, p, dpi)))
     if "granular_temperature" in series:
         figures.append(("collisions", lambda p, dpi: plot_collisions(run, run_path, p, dpi)))
+    if "profile_sums" in series:
+        figures.append(("profiles", lambda p, dpi: plot_profiles(run, run_path, p, dpi)))
     return figures

@@ -20,6 +20,36 @@ std::array<int, 3> read_cells(TableReader& t, std::string_view key,
   return cells;
 }
 
+/// [analysis.profiles]: heights (required), thickness, axis, bins, start.
+void read_profiles(TableReader& t, Scene& scene) {
+  ProfileSettings& p = scene.analysis.profiles;
+  const Domain& domain = scene.system.domain;
+  const Vec3& g = scene.system.flight.gravity;
+  int vertical = 2;
+  if (g.squaredNorm() > 0.0)
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(g[k]) > std::abs(g[vertical])) vertical = k;
+  const std::string up(1, "xyz"[vertical]);
+  if (!t.has("heights")) t.fail("heights", "is missing (section centres along " + up + ", m)");
+  p.heights =
+      t.numbers("heights", Range{domain.lower[vertical], domain.upper[vertical], false, false,
+                                 "section centres along " + up +
+                                     " (the vertical axis), m, "
+                                     "inside the domain"});
+  if (p.heights.empty()) t.fail("heights", "is empty (give at least one section centre, m)");
+  const double extent = domain.upper[vertical] - domain.lower[vertical];
+  p.thickness = t.number("thickness", extent / 20.0,
+                         Range{0.0, extent, true, false, "section thickness along " + up + ", m"});
+  const std::string axis = t.string("axis", vertical == 0 ? "y" : "x", {"x", "y", "z"});
+  p.axis = axis[0] - 'x';
+  if (p.axis == vertical)
+    t.fail("axis",
+           "is the vertical axis " + up + ": bins run across the sections (choose another axis)");
+  p.bins = static_cast<int>(t.integer("bins", 10, 1, 10000, "bins across the domain"));
+  p.start = t.number("start", 0.0, Range{0.0, INFINITY, false, true, "start of the averaging, s"});
+  t.finish();
+}
+
 }  // namespace
 
 void read_analysis(TableReader& root, Scene& scene) {
@@ -35,6 +65,7 @@ void read_analysis(TableReader& root, Scene& scene) {
                    "particles of the tagged species a sample cell needs to count"));
     m->finish();
   }
+  if (auto p = section->table("profiles")) read_profiles(*p, scene);
   if (auto f = section->table("fields")) {
     a.field_cells = read_cells(*f, "cells", {1, 1, 1});
     f->finish();

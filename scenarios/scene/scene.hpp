@@ -80,6 +80,16 @@ struct FlightSettings {
 };
 
 /// [analysis]: what a run measures beyond the standard time series (SCENES.md, "Analysis").
+/// [analysis.profiles]: statistics in bins across sections at chosen heights
+/// (scenarios/analysis/section_profiles.hpp).
+struct ProfileSettings {
+  std::vector<double> heights;  ///< Section centres along the vertical axis, m; empty: no profiles.
+  double thickness = 0;         ///< Section extent along the vertical axis, m.
+  int axis = 0;                 ///< Bin axis across the sections (0 x, 1 y, 2 z).
+  int bins = 10;                ///< Bins across the domain along `axis`.
+  double start = 0;             ///< Samples before this time are left out of the averages, s.
+};
+
 struct AnalysisSettings {
   /// Mixing: the particles of this species are tagged by their height at t = 0 (lower and upper
   /// half); -1: no mixing analysis.
@@ -92,6 +102,7 @@ struct AnalysisSettings {
   std::array<int, 3> field_cells{0, 0, 0};
   /// Particle ids of the tagged bodies ([[particles]] entries with tagged = true).
   std::vector<std::uint64_t> tagged_bodies;
+  ProfileSettings profiles;  ///< Profiles across sections (none when heights is empty).
 };
 
 struct Scene {

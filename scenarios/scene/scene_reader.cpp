@@ -212,6 +212,31 @@ Vec3 TableReader::required_vector3(std::string_view key, const Range& range) {
   return vector3(key, Vec3::Zero(), range);
 }
 
+std::vector<double> TableReader::numbers(std::string_view key, const Range& range) {
+  std::vector<double> out;
+  const toml::node* n = node(key);
+  if (!n) return out;
+  const auto* a = n->as_array();
+  if (!a)
+    fail(key,
+         "is not an array of numbers (" + range.meaning + ", each in " + range.describe() + ")");
+  for (const toml::node& c : *a) {
+    double x;
+    if (const auto* f = c.as_floating_point())
+      x = f->get();
+    else if (const auto* i = c.as_integer())
+      x = static_cast<double>(i->get());
+    else
+      fail(key, "has an entry that is not a number (" + range.meaning + ")");
+    if (!std::isfinite(x)) fail(key, "has an entry that is not finite (" + range.meaning + ")");
+    if (!range.contains(x))
+      fail(key, "has entry " + std::to_string(out.size() + 1) + " = " + format_number(x) +
+                    " outside the allowed range " + range.describe() + " (" + range.meaning + ")");
+    out.push_back(x);
+  }
+  return out;
+}
+
 std::vector<std::string> TableReader::strings(std::string_view key) {
   std::vector<std::string> out;
   const toml::node* n = node(key);

@@ -100,6 +100,8 @@ class TableReader {
   Vec3 required_vector3(std::string_view key, const Range& range);
   /// An array of strings.
   std::vector<std::string> strings(std::string_view key);
+  /// An array of numbers, each in `range` (empty when absent).
+  std::vector<double> numbers(std::string_view key, const Range& range);
   /// A sub-table (inline or standard), or nullopt when absent.
   std::optional<TableReader> table(std::string_view key);
   /// An array of tables (`[[key]]`); empty when absent.

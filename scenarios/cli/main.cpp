@@ -1,11 +1,10 @@
 // carom: the command line of the event-driven hard-sphere simulator.
 //
-//   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--quiet] [--overwrite]
-//   carom resume DIR [--end T] [--quiet]
-//   carom check SCENE [--set key=value ...] [--seed N]
-//   carom info FILE.h5 [--tree]
-//   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
-//   carom chart CHART.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
+//   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--method auto|KIND] [--quiet]
+//   [--overwrite] carom resume DIR [--end T] [--quiet] carom check SCENE [--set key=value ...]
+//   [--seed N] carom info FILE.h5 [--tree] carom sweep SWEEP.toml [--jobs J] [--out DIR]
+//   [--retry-failed] [--dry-run] [--quiet] carom chart CHART.toml [--jobs J] [--out DIR]
+//   [--retry-failed] [--dry-run] [--quiet]
 //
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
 // is written), 130 interrupted by SIGINT/SIGTERM (a checkpoint is written). See run.hpp.
@@ -17,6 +16,7 @@
 #include "scenarios/chart/chart.hpp"
 #include "scenarios/cli/check.hpp"
 #include "scenarios/cli/info.hpp"
+#include "scenarios/cli/recommend.hpp"
 #include "scenarios/run/run.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   std::string scene_path, out_dir, resume_dir, info_path;
   std::vector<std::string> overrides;
   std::string seed_text;  // checked by parse_seed: CLI11 would wrap "-1" into 2^64 - 1
+  std::string method_choice;
   bool quiet = false, overwrite = false;
   double end_time = 0;
 
@@ -49,6 +50,11 @@ int main(int argc, char** argv) {
       ->type_name("KEY=VALUE");
   CLI::Option* out_option = run->add_option("--out", out_dir, "output directory (default: SCENE's name + .out)");
   CLI::Option* seed_option = run->add_option("--seed", seed_text, "random seed, an integer >= 0 (replaces initial.seed)");
+  run->add_option(
+         "--method", method_choice,
+         "collision method: auto (what `carom check` recommends), event_driven, soft_sphere or "
+         "monte_carlo (replaces method.kind)")
+      ->check(CLI::IsMember({"auto", "event_driven", "soft_sphere", "monte_carlo"}));
   run->add_flag("--quiet", quiet, "no progress line and no messages but errors");
   run->add_flag("--overwrite", overwrite, "replace the outputs of an earlier run in DIR");
 
@@ -117,7 +123,26 @@ int main(int argc, char** argv) {
     if (*run || *check) {
       std::optional<std::uint64_t> chosen_seed;
       if (seed_option->count() > 0 || check_seed->count() > 0) chosen_seed = parse_seed(seed_text);
+      if (!method_choice.empty() && method_choice != "auto")
+        overrides.push_back("method.kind=" + method_choice);
       Scene scene = load_scene(scene_path, overrides, chosen_seed);
+      if (method_choice == "auto") {
+        // The recommendation from the placed particles (without the settling run, which would
+        // use the scene's method), then the scene again with the recommended method.
+        install_stop_handlers();
+        Scene placed = scene;
+        placed.settle_time = 0;
+        build_initial_state(placed, stop_flag());
+        if (*stop_flag())
+          throw InterruptedBeforeStart(
+              "interrupted while the particles were placed: nothing written");
+        const std::vector<Advice> advice = recommend(placed, scene_numbers(placed));
+        const std::string_view chosen = method_name(recommended_method(advice));
+        if (!quiet)
+          std::cerr << "carom: --method auto: " << chosen << " (" << advice.front().reason << ")\n";
+        overrides.push_back("method.kind=" + std::string(chosen));
+        scene = load_scene(scene_path, overrides, chosen_seed);
+      }
       if (*check) {
         install_stop_handlers();
         build_initial_state(scene, stop_flag());
@@ -128,6 +153,8 @@ int main(int argc, char** argv) {
           throw SceneError(scene.file + ": " + e.what());
         }
         std::cout << describe_scene(scene);
+        std::cout << describe_recommendation(scene_numbers(scene),
+                                             recommend(scene, scene_numbers(scene)));
         return kExitOk;
       }
       RunOptions options;

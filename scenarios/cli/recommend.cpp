@@ -1,0 +1,379 @@
+#include "scenarios/cli/recommend.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "fluid/drag.hpp"
+#include "scenarios/analysis/local_fields.hpp"
+
+namespace carom {
+
+namespace {
+
+/// Three significant digits.
+std::string num(double x) {
+  std::ostringstream out;
+  out.precision(3);
+  out << x;
+  return out.str();
+}
+
+/// The axis gravity points along (z without gravity).
+int vertical_axis(const Vec3& g) {
+  if (g.squaredNorm() == 0.0) return 2;
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(g[k]) > std::abs(g[axis])) axis = k;
+  return axis;
+}
+
+/// Carnahan-Starling contact value, the packing capped at 0.6 (a frozen packing has no mean free
+/// time to speak of; the cap keeps the estimate finite).
+double contact_value(double phi) {
+  const double p = std::min(phi, 0.6);
+  return (1.0 - p / 2.0) / std::pow(1.0 - p, 3);
+}
+
+/// Hertz contact time of two equal spheres of the species at approach speed v, s.
+double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) {
+  const double e_star = m.young_modulus / (2.0 * (1.0 - m.poisson_ratio * m.poisson_ratio));
+  const double r_star = s.radius() / 2.0, m_star = s.mass() / 2.0;
+  const double overlap = std::pow(15.0 * m_star * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
+  return 2.9432752 * overlap / v;  // VALIDATION.md, "Soft-sphere contacts"
+}
+
+}  // namespace
+
+SceneNumbers scene_numbers(const Scene& scene) {
+  const System& system = scene.system;
+  const ParticleStore& p = system.particles;
+  const Domain& domain = system.domain;
+  const std::size_t S = system.species.size();
+  const Vec3& gravity = system.flight.gravity;
+  const double g = gravity.norm();
+  const int up = vertical_axis(gravity);
+  SceneNumbers n;
+
+  // Masses, solid fraction, the largest and the Sauter-mean diameter.
+  std::vector<double> mass(S, 0.0);
+  double solid = 0.0, total_mass = 0.0, d_max = 0.0, d3 = 0.0, d2 = 0.0, v2 = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Species& s = system.species[p.species[i]];
+    mass[p.species[i]] += s.mass();
+    total_mass += s.mass();
+    solid += s.volume();
+    d_max = std::max(d_max, s.diameter);
+    d3 += std::pow(s.diameter, 3);
+    d2 += s.diameter * s.diameter;
+    v2 += p.velocity[i].squaredNorm();
+  }
+  n.solid_fraction = solid / domain.volume();
+  const double sauter = d2 > 0 ? d3 / d2 : 0.0;
+  if (p.size() > 0) {
+    std::array<int, 3> cells{};
+    for (int k = 0; k < 3; ++k)
+      cells[k] = std::max(1, static_cast<int>(std::floor(domain.length()[k] / (4.0 * d_max))));
+    std::vector<Vec3> r(p.position.begin(),
+                        p.position.begin() + static_cast<std::ptrdiff_t>(p.size()));
+    std::vector<Vec3> v(p.velocity.begin(),
+                        p.velocity.begin() + static_cast<std::ptrdiff_t>(p.size()));
+    std::vector<std::uint32_t> sp(p.species.begin(),
+                                  p.species.begin() + static_cast<std::ptrdiff_t>(p.size()));
+    std::vector<double> a(p.radius.begin(),
+                          p.radius.begin() + static_cast<std::ptrdiff_t>(p.size()));
+    const LocalFields f =
+        local_fields(r, v, sp, a, S, SampleGrid{domain.lower, domain.upper, cells});
+    // The solid fraction around a typical particle: the cells' fractions weighted by their
+    // particle counts (the densest single cell is noisy: a cell of 4 diameters holds few).
+    double weighted = 0.0, particles = 0.0;
+    for (std::size_t c = 0; c < f.grid.size(); ++c) {
+      double count = 0.0;
+      for (std::size_t s = 0; s < S; ++s) count += static_cast<double>(f.count[f.at(c, s)]);
+      if (count == 0.0 || !std::isfinite(f.solid_fraction(c))) continue;
+      weighted += count * f.solid_fraction(c);
+      particles += count;
+    }
+    n.solid_fraction_seen = particles > 0 ? weighted / particles : 0.0;
+  }
+
+  // The gas: inlet velocity, relaxation times, Stokes numbers, U_mf.
+  const GasSettings& gas = scene.gas;
+  const bool has_gas = gas.coupling != CouplingLevel::None;
+  int inlet_axis = up;
+  for (int side = 0; side < 6; ++side)
+    if (gas.sides[side].kind == GasSide::Kind::Inlet &&
+        gas.sides[side].velocity > n.inlet_velocity) {
+      n.inlet_velocity = gas.sides[side].velocity;
+      inlet_axis = side / 2;
+    }
+  if (!has_gas) n.inlet_velocity = 0.0;
+  const DragClosure closure(gas.closure, gas.fluidization_porosity, g > 0 ? g : 9.81);
+  double tau_min = INFINITY;
+  for (std::size_t s = 0; s < S; ++s) {
+    const Species& sp = system.species[s];
+    SpeciesNumbers x;
+    x.name = sp.name;
+    x.mass_share = total_mass > 0 ? mass[s] / total_mass : 0.0;
+    if (has_gas) {
+      DragInput in;
+      in.diameter = in.sauter_diameter = sp.diameter;
+      in.gas_density = gas.density;
+      in.gas_viscosity = gas.viscosity;
+      in.particle_density = sp.density;
+      x.relaxation_time = g > 0 ? closure.terminal_velocity(in) / g
+                                : sp.density * sp.diameter * sp.diameter / (18.0 * gas.viscosity);
+      if (n.inlet_velocity > 0)
+        x.stokes = x.relaxation_time * n.inlet_velocity / domain.length()[inlet_axis];
+      if (g > 0) x.minimum_fluidization = closure.minimum_fluidization_velocity(in, 0.4);
+      if (mass[s] > 0) tau_min = std::min(tau_min, x.relaxation_time);
+    }
+    n.species.push_back(x);
+  }
+  if (has_gas) {
+    n.mass_loading = total_mass / (gas.density * (domain.volume() - solid));
+    if (std::isfinite(tau_min)) n.step_ratio = tau_min / gas.time_step;
+    n.cell_ratio = INFINITY;
+    n.gas_dimensions = 1;
+    n.gas_dimensions_needed = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double edge = domain.length()[k] / gas.cells[k];
+      if (gas.cells[k] > 1) n.cell_ratio = std::min(n.cell_ratio, edge / d_max);
+      if (k == up) continue;
+      if (gas.cells[k] > 1) ++n.gas_dimensions;
+      if (domain.length()[k] > 2.0 * kCellDiameters * d_max * (1.0 + 1e-9))
+        ++n.gas_dimensions_needed;
+    }
+    if (!std::isfinite(n.cell_ratio)) n.cell_ratio = NAN;
+  }
+
+  // Tube: a cylinder wall, or the narrowest lateral extent of the box.
+  for (const Wall& w : system.walls)
+    if (const auto* c = std::get_if<CylinderWall>(&w.shape)) {
+      n.tube = true;
+      n.tube_ratio = d_max > 0 ? 2.0 * c->radius / d_max : NAN;
+      // A tube's gas is resolved across it only if the tube holds 2 cells of 3 diameters.
+      if (has_gas && !(n.tube_ratio > 2.0 * kCellDiameters * (1.0 + 1e-9)))
+        n.gas_dimensions_needed = 1;
+    }
+  if (!n.tube && d_max > 0) {
+    n.tube_ratio = INFINITY;
+    for (int k = 0; k < 3; ++k)
+      if (k != up) n.tube_ratio = std::min(n.tube_ratio, domain.length()[k] / d_max);
+  }
+
+  // Collision speeds: the initial motion, else the gas, else a fall through the domain.
+  const double rms = p.size() > 0 ? std::sqrt(v2 / static_cast<double>(p.size())) : 0.0;
+  if (rms > 0) {
+    n.speed = rms;
+    n.speed_source = "the initial rms speed";
+  } else if (n.inlet_velocity > 0) {
+    n.speed = n.inlet_velocity;
+    n.speed_source = "the superficial gas velocity (bubbles stir beads at a fraction of it)";
+  } else if (g > 0) {
+    n.speed = std::sqrt(2.0 * g * domain.length()[up]);
+    n.speed_source = "a fall through the domain's height";
+  }
+  if (sauter > 0 && n.speed > 0 && n.solid_fraction_seen > 0) {
+    // Enskog, omega = 4 n d^2 g0 sqrt(pi T / m) with T = m v^2 / 3.
+    const double number_density =
+        6.0 * n.solid_fraction_seen / (std::numbers::pi * std::pow(sauter, 3));
+    const double omega = 4.0 * number_density * sauter * sauter *
+                         contact_value(n.solid_fraction_seen) * std::sqrt(std::numbers::pi / 3.0) *
+                         n.speed;
+    n.mean_free_time = 1.0 / omega;
+  }
+
+  // Contact time: Hertz with the scene's elastic constants, else the TC model's.
+  const auto& materials = scene.method.soft_sphere.species_materials;
+  std::size_t largest = 0;
+  for (std::size_t s = 1; s < S; ++s)
+    if (system.species[s].diameter > system.species[largest].diameter) largest = s;
+  // (The TC model's contact_time is a numerical remedy, not the beads' contact: not used.)
+  if (largest < materials.size() && materials[largest].young_modulus > 0 && n.speed > 0) {
+    n.contact_time = hertz_contact_time(system.species[largest], materials[largest], n.speed);
+    n.contact_source = "Hertz for two " + system.species[largest].name + " at the speed scale";
+  } else {
+    n.contact_source = "unknown (give young_modulus in [[species]] to estimate it)";
+  }
+
+  // Lasting contacts.
+  bool dissipative = false, floor = false;
+  for (std::size_t s = 0; s < S; ++s) {
+    for (std::size_t t = 0; t < S; ++t) dissipative |= system.materials.pair(s, t).restitution < 1;
+    for (std::size_t w = 0; w < system.walls.size(); ++w)
+      dissipative |= system.materials.wall(s, w).restitution < 1;
+  }
+  floor = g > 0 && !domain.periodic[up];
+  // The time to land: the domain's height at the terminal velocity (with a gas) or in free fall.
+  double fall = g > 0 ? std::sqrt(2.0 * domain.length()[up] / g) : INFINITY;
+  for (const SpeciesNumbers& x : n.species)
+    if (std::isfinite(x.relaxation_time) && x.relaxation_time > 0)
+      fall = std::max(fall, domain.length()[up] / (x.relaxation_time * g));
+  double moving = 0.0;  // mass share of the species that move (fixed ones never do)
+  for (std::size_t s = 0; s < S; ++s)
+    if (!system.species[s].fixed) moving += n.species[s].mass_share;
+  if (moving == 0.0) {
+    n.lasting_reason = "every particle is fixed";
+  } else if (has_gas && n.inlet_velocity > 0 && g > 0) {
+    for (std::size_t s = 0; s < S; ++s)
+      if (!system.species[s].fixed && n.inlet_velocity <= n.species[s].minimum_fluidization)
+        n.lasting_share += n.species[s].mass_share;
+    n.lasting_reason = n.lasting_share > 0 ? "species with U <= U_mf stay packed"
+                                           : "every species is fluidized (U > U_mf)";
+  } else if (floor && dissipative && scene.end_time > fall) {
+    n.lasting_share = moving;
+    n.lasting_reason =
+        "dissipative particles under gravity with nothing to lift them come to rest on the floor "
+        "(they land within about " +
+        num(fall) + " s)";
+  } else if (floor && dissipative) {
+    n.lasting_reason = "the run ends (t = " + num(scene.end_time) +
+                       " s) before the particles land (about " + num(fall) + " s)";
+  } else {
+    n.lasting_reason =
+        g > 0 ? "elastic or without a floor: nothing comes to rest" : "no gravity: a granular gas";
+  }
+  return n;
+}
+
+std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
+  std::vector<Advice> advice;
+  const bool has_gas = scene.gas.coupling != CouplingLevel::None;
+  const MethodKind now = scene.method.kind;
+
+  // Method.
+  Advice method{"method", "event_driven", "", std::string(method_name(now)), false};
+  const double share = n.contact_time / n.mean_free_time;
+  if (n.lasting_share >= kLastingShare) {
+    method.choice = "soft_sphere";
+    method.reason =
+        num(100 * n.lasting_share) + " % of the mass in lasting contacts (" + n.lasting_reason +
+        "): hard spheres would need the TC model, which makes those contacts smooth and elastic";
+  } else if (std::isfinite(share) && share > kContactShare) {
+    method.choice = "soft_sphere";
+    method.reason = "contacts last " + num(share) + " of the mean free time (> " +
+                    num(kContactShare) + "): collisions are not binary";
+  } else {
+    method.reason =
+        "binary collisions (" +
+        (std::isfinite(share) ? "contact time " + num(share) + " of the mean free time"
+                              : std::string("contact time unknown")) +
+        ", " + num(100 * n.lasting_share) +
+        " % in lasting contacts): exact events. Monte Carlo is not recommended by itself: "
+        "on the dilute gas chart (1320 spheres, phi = 0.05) it cost 1.3-3.4 times the events "
+        "and missed the collision frequency by 2.5-6 %";
+  }
+  method.differs = method.choice != method.scene;
+  advice.push_back(method);
+  if (!has_gas) {
+    advice.push_back({"coupling", "none", "no gas in the scene", "none", false});
+    return advice;
+  }
+
+  // Coupling.
+  double stokes_min = INFINITY;
+  for (const SpeciesNumbers& x : n.species)
+    if (x.mass_share > 0 && std::isfinite(x.stokes)) stokes_min = std::min(stokes_min, x.stokes);
+  const CouplingLevel level = scene.gas.coupling;
+  Advice coupling{"coupling", "two-way", "", level == CouplingLevel::OneWay ? "one-way" : "two-way",
+                  false};
+  if (std::isfinite(stokes_min) && stokes_min > kNoGasStokes) {
+    coupling.choice = "none";
+    coupling.reason = "Stokes number " + num(stokes_min) + " > " + num(kNoGasStokes) +
+                      ": the gas changes the particles' velocities by about 1/St per flow time";
+  } else if (n.mass_loading < kOneWayLoading) {
+    coupling.choice = "one-way";
+    coupling.reason = "mass loading " + num(n.mass_loading) + " < " + num(kOneWayLoading) +
+                      ": the particles change the gas momentum by about that share";
+  } else {
+    coupling.reason = "mass loading " + num(n.mass_loading) + " >= " + num(kOneWayLoading) +
+                      ": the particles' drag and volume change the gas";
+  }
+  coupling.differs = coupling.choice != coupling.scene;
+  advice.push_back(coupling);
+
+  // Flight (event-driven and Monte Carlo flights between the gas steps).
+  if (method.choice != "soft_sphere") {
+    const bool kick = scene.flight.model == FlightModel::Kick;
+    Advice flight{"flight", "relax", "", kick ? "kick" : "relax", false};
+    if (n.step_ratio >= kKickStepRatio) {
+      flight.choice = "kick or relax";
+      flight.reason = "the shortest relaxation time is " + num(n.step_ratio) +
+                      " fluid steps: kicks are stable and first-order accurate to about " +
+                      num(100.0 / n.step_ratio) + " %, and cheaper to predict";
+    } else {
+      flight.reason = "the shortest relaxation time is " + num(n.step_ratio) + " fluid steps (< " +
+                      num(kKickStepRatio) + "): kicks would be inaccurate" +
+                      (n.step_ratio < 2 ? " and unstable (step > 2 tau)" : "") +
+                      "; relax flights are exact for any step";
+      flight.differs = kick;
+    }
+    advice.push_back(flight);
+  }
+
+  // Gas grid.
+  const char* names[] = {"", "1-D (cells along the flow only)", "2-D", "3-D"};
+  const bool at_rest = n.inlet_velocity == 0 && coupling.choice != "two-way";
+  const int needed = at_rest ? 1 : n.gas_dimensions_needed;
+  Advice grid{"gas grid", names[needed], "", names[n.gas_dimensions], false};
+  if (at_rest) {
+    grid.reason = "no inlet and the particles do not move the gas: it stays uniform";
+  } else {
+    grid.reason = "cells must span " + num(kCellDiameters) +
+                  " largest diameters and an axis needs 2 of them; " +
+                  (n.tube ? "the tube is " : "the narrowest lateral extent is ") +
+                  num(n.tube_ratio) + " diameters";
+    if (n.cell_ratio < kCellDiameters)
+      grid.reason += "; the scene's smallest cell is " + num(n.cell_ratio) +
+                     " diameters, finer than the drag closures assume";
+  }
+  grid.differs = n.gas_dimensions != needed;
+  advice.push_back(grid);
+  return advice;
+}
+
+MethodKind recommended_method(const std::vector<Advice>& advice) {
+  for (std::size_t k = 0; k < kMethodNames.size(); ++k)
+    if (!advice.empty() && advice.front().choice == kMethodNames[k])
+      return static_cast<MethodKind>(k);
+  return MethodKind::EventDriven;
+}
+
+std::string describe_recommendation(const SceneNumbers& n, const std::vector<Advice>& advice) {
+  std::ostringstream out;
+  out << "\nthe least model this scene needs (estimates from t = 0; carom run --method auto uses "
+         "the method):\n";
+  out << "  solid fraction " << num(n.solid_fraction) << " of the domain, "
+      << num(n.solid_fraction_seen) << " around a typical particle (sample cells of 4 diameters)\n";
+  if (std::isfinite(n.speed))
+    out << "  speed scale " << num(n.speed) << " m/s (" << n.speed_source << "): mean free time "
+        << num(n.mean_free_time) << " s (Enskog at that solid fraction)\n";
+  out << "  contact time "
+      << (std::isfinite(n.contact_time) ? num(n.contact_time) + " s" : std::string("?")) << " ("
+      << n.contact_source << ")";
+  if (std::isfinite(n.contact_time / n.mean_free_time))
+    out << ", " << num(n.contact_time / n.mean_free_time) << " of the mean free time";
+  out << "\n  lasting contacts: " << num(100 * n.lasting_share) << " % of the mass ("
+      << n.lasting_reason << ")\n";
+  for (const SpeciesNumbers& x : n.species)
+    if (std::isfinite(x.relaxation_time))
+      out << "  " << x.name << ": relaxation time " << num(x.relaxation_time) << " s"
+          << (std::isfinite(x.stokes) ? ", Stokes number " + num(x.stokes) + " (flow time L/U)"
+                                      : std::string())
+          << "\n";
+  if (std::isfinite(n.mass_loading))
+    out << "  mass loading " << num(n.mass_loading) << ", relaxation time / fluid step "
+        << num(n.step_ratio) << ", gas cell / diameter " << num(n.cell_ratio) << "\n";
+  if (std::isfinite(n.tube_ratio))
+    out << "  " << (n.tube ? "tube" : "narrowest lateral extent") << " / diameter "
+        << num(n.tube_ratio) << "\n";
+  for (const Advice& a : advice)
+    out << "  " << a.topic << ": " << a.choice
+        << (a.differs ? " (the scene has " + a.scene + ")" : std::string()) << " - " << a.reason
+        << "\n";
+  return out.str();
+}
+
+}  // namespace carom

@@ -1,0 +1,99 @@
+#pragma once
+/// The least model a scene needs (`carom check`, `carom run --method auto`): the scene's
+/// dimensionless numbers, estimated from the scene and its initial state before anything runs,
+/// and from them the method, flight model, gas coupling and gas dimensionality to use, each with
+/// its reason. The estimates are orders of magnitude (stated with each number); the thresholds
+/// are named constants below, each with the reason for its value.
+#include <string>
+#include <vector>
+
+#include "events/method_factory.hpp"
+#include "scenarios/scene/scene.hpp"
+
+namespace carom {
+
+/// A species' response to the gas.
+struct SpeciesNumbers {
+  std::string name;
+  double mass_share = 0;  ///< Share of the particles' mass.
+  double relaxation_time =
+      NAN;  ///< tau = U_t / g (Stokes' rho d^2 / (18 mu) without gravity), s; NaN without gas.
+  double stokes =
+      NAN;  ///< tau / (L / U), L the domain along the inlet's axis; NaN without an inlet.
+  double minimum_fluidization =
+      NAN;  ///< U_mf of the scene's closure at eps_mf = 0.4, m/s; NaN without gravity or gas.
+};
+
+/// The numbers `carom check` reports.
+struct SceneNumbers {
+  std::vector<SpeciesNumbers> species;
+  double solid_fraction = 0;  ///< Solid volume / domain volume.
+  /// Solid fraction around a typical particle at t = 0: that of sample cells of about 4 largest
+  /// diameters, weighted by their particle counts.
+  double solid_fraction_seen = 0;
+  double speed = NAN;  ///< Collision speed scale, m/s (`speed_source` says which).
+  std::string speed_source;
+  double mean_free_time = NAN;  ///< Enskog at solid_fraction_seen and `speed`, s.
+  /// Hertz binary contact time of the largest species at `speed`, s; NaN without elastic
+  /// constants (young_modulus).
+  double contact_time = NAN;
+  std::string contact_source;
+  double lasting_share = 0;  ///< Share of the mass expected in lasting contacts.
+  std::string lasting_reason;
+  double inlet_velocity = 0;  ///< Largest superficial inlet velocity, m/s (0: none).
+  double mass_loading = NAN;  ///< Particle mass / gas mass in the domain; NaN without gas.
+  double cell_ratio = NAN;    ///< Smallest gas cell edge (axes of > 1 cell) / largest diameter.
+  double tube_ratio =
+      NAN;            ///< Tube (cylinder wall) or narrowest lateral extent / largest diameter.
+  bool tube = false;  ///< tube_ratio is a cylinder's.
+  int gas_dimensions_needed =
+      0;  ///< 1, 2 or 3: axes wide enough for 2 cells of 3 largest diameters (0: no gas).
+  int gas_dimensions =
+      0;  ///< The scene's: axes with more than one gas cell, at least 1 (0: no gas).
+  double step_ratio = NAN;  ///< Smallest relaxation time / fluid step; NaN without gas.
+};
+
+/// One recommendation.
+struct Advice {
+  std::string topic;     ///< "method", "flight", "coupling", "gas grid".
+  std::string choice;    ///< What to use.
+  std::string reason;    ///< Why, with the numbers.
+  std::string scene;     ///< What the scene has now.
+  bool differs = false;  ///< The scene models more or less than recommended.
+};
+
+/// Thresholds (and why).
+/// Lasting contacts in at least this share of the mass call for soft spheres: hard spheres then
+/// need the TC model, which makes those contacts smooth and elastic (the pinned plug of
+/// tests/bench/README.md "Lasting contacts" stops with lasting_contacts).
+inline constexpr double kLastingShare = 0.5;
+/// A contact lasting this share of the mean free time is not binary (the event-driven method
+/// assumes instantaneous binary collisions).
+inline constexpr double kContactShare = 0.1;
+/// Particle-to-gas mass loading below which the particles' drag changes the gas momentum by
+/// less than about 10 %: one-way coupling suffices.
+inline constexpr double kOneWayLoading = 0.1;
+/// Stokes number above which the gas changes a particle's velocity by less than 1/St per flow
+/// time: the gas need not be modelled at all.
+inline constexpr double kNoGasStokes = 1e3;
+/// Relaxation time / fluid step above which kick flights are accurate (first-order error about
+/// step / tau = 1 %) and stable (step < 2 tau).
+inline constexpr double kKickStepRatio = 100.0;
+/// Gas cells must span this many largest diameters (coarse-grid closures), and an axis needs two
+/// of them to resolve anything across it.
+inline constexpr double kCellDiameters = 3.0;
+
+/// The numbers of a scene whose initial state has been built (scene.system.particles placed).
+SceneNumbers scene_numbers(const Scene& scene);
+
+/// The recommendation for those numbers: method, flight, coupling, gas grid (the last three
+/// only where the scene has a gas or could need one).
+std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& numbers);
+
+/// The recommended method (the first advice's choice, as a MethodKind).
+MethodKind recommended_method(const std::vector<Advice>& advice);
+
+/// The "least model" section of `carom check`.
+std::string describe_recommendation(const SceneNumbers& numbers, const std::vector<Advice>& advice);
+
+}  // namespace carom

@@ -1,6 +1,7 @@
-// Profiles across sections through the `carom` command line: in a homogeneous elastic gas every
-// bin's solid fraction is the gas's and every velocity component spreads by sqrt(T / m); a run
-// ended and resumed writes the same sums bit for bit.
+// Profiles across sections and plugs through the `carom` command line: in a homogeneous elastic
+// gas every bin's solid fraction is the gas's and every velocity component spreads by
+// sqrt(T / m); a run ended and resumed writes the same profile sums, axial profiles and plug
+// heights bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,6 +106,31 @@ TEST_F(Cli, ProfileSumsResumeBitForBit) {
   const std::vector<double> a = sums("whole"), b = sums("part");
   ASSERT_EQ(a.size(), 17u * 44u);
   EXPECT_EQ(a, b);
+}
+
+TEST_F(Cli, PlugSeriesResumeBitForBit) {
+  const std::string column = std::string(CAROM_SCENES_DIR) + "/column_1d.toml";
+  const std::string sets =
+      " --set analysis.plugs.threshold=0.3 --set initial.settle_time=0.01 --quiet";
+  ASSERT_EQ(carom("run " + column + sets + " --set time.end=0.06 --out whole"), 0) << out_;
+  ASSERT_EQ(carom("run " + column + sets + " --set time.end=0.03 --out part"), 0) << out_;
+  ASSERT_EQ(carom("resume part --end 0.06 --quiet"), 0) << out_;
+  for (const char* name : {"time", "axial_solid_fraction", "plug_height"}) {
+    const auto read_series = [&](const char* run) {
+      const carom::h5::File file = carom::h5::File::open((dir_ / run / "run.h5").string(), false);
+      return file.open_group("timeseries").read<double>(name);
+    };
+    const std::vector<double> a = read_series("whole"), b = read_series("part");
+    EXPECT_FALSE(a.empty()) << name;
+    EXPECT_EQ(a, b) << name;
+  }
+  // 80 bins of 1 mm, 300 beads, 31 samples (every 2 ms to 0.06 s).
+  const carom::h5::File file = carom::h5::File::open((dir_ / "whole" / "run.h5").string(), false);
+  EXPECT_EQ(file.open_group("timeseries").read<double>("axial_solid_fraction").size(), 80u * 31u);
+  EXPECT_EQ(file.open_group("timeseries").read<double>("plug_height").size(), 300u * 31u);
+  EXPECT_NE(read(dir_ / "whole" / "report.md").find("## Plugs"), std::string::npos);
+  EXPECT_NE(read(dir_ / "whole" / "summary.json").find("\"plugs\": {\"bin\": 0.001"),
+            std::string::npos);
 }
 
 TEST_F(Cli, ProfilesRefuseASectionOutsideTheDomainAndBinsAlongTheVertical) {

@@ -89,6 +89,7 @@ std::string RunAnalysis::summary_json(const CollisionMethod& sim) const {
   // per second from each species, per weight.
   if (c.tagged.bodies > 0) j << "    \"tagged_bodies\": " << tagged_json(c.tagged) << ",\n";
   if (c.has_profiles) j << "    \"profiles\": " << profiles_json(profiles_, c.profiles) << ",\n";
+  if (!c.plugs.empty()) j << "    \"plugs\": " << plugs_json(plugs_, c.plugs) << ",\n";
   j << "    \"mechanism\": {";
   std::vector<std::pair<std::string, double>> mechanism;
   for (std::size_t s = 0; s < S; ++s) {
@@ -173,8 +174,9 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
   bool weighed = false;
   for (double w : c.weight) weighed |= w > 0;
   // Sections every run may have after the mechanism's.
-  const std::string tail =
-      tagged_report(c.tagged) + (c.has_profiles ? profiles_report(profiles_, c.profiles) : "");
+  const std::string tail = tagged_report(c.tagged) +
+                           (c.has_profiles ? profiles_report(profiles_, c.profiles) : "") +
+                           (c.plugs.empty() ? "" : plugs_report(plugs_, c.plugs));
   if (!several && !c.gas) return r.str() + tail;
   r << "\n## " << (several ? "Mechanism" : "Gas seen by the particles") << "\n\n";
   if (several && c.gas)

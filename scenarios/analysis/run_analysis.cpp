@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <stdexcept>
 
@@ -76,6 +77,10 @@ std::vector<std::pair<std::string, std::size_t>> RunAnalysis::widths() const {
   auto all = series_widths(scene_.system.species.size());
   for (auto& w : tagged_series_widths(tagged_ids_.size(), tagged_partners_)) all.push_back(w);
   if (!profiles_.heights.empty()) all.emplace_back("profile_sums", profiles_.row_width());
+  if (plugs_.bins > 0) {
+    all.emplace_back("axial_solid_fraction", static_cast<std::size_t>(plugs_.bins));
+    all.emplace_back("plug_height", ids_.size());
+  }
   return all;
 }
 
@@ -105,6 +110,22 @@ RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim) : scene
                                 system.domain.upper[s.axis],
                                 system.domain.upper[third] - system.domain.lower[third],
                                 s.start};
+  }
+  if (a.plugs.enabled) {
+    double largest = 0.0;
+    for (const Species& s : system.species) largest = std::max(largest, s.diameter);
+    const Vec3 length = system.domain.length();
+    plugs_.bottom = system.domain.lower[vertical_];
+    plugs_.bin = a.plugs.bin > 0 ? a.plugs.bin : largest;
+    plugs_.bins = std::max(1, static_cast<int>(std::floor(length[vertical_] / plugs_.bin)));
+    plugs_.area = length.prod() / length[vertical_];
+    for (const Wall& w : system.walls)
+      if (const auto* c = std::get_if<CylinderWall>(&w.shape); c != nullptr && vertical_ == 2)
+        plugs_.area = std::min(plugs_.area, std::numbers::pi * c->radius * c->radius);
+    plugs_.diameter = largest;
+    plugs_.min_bins = a.plugs.min_bins;
+    plugs_.thresholds = a.plugs.thresholds;
+    plugs_.rate_window = a.plugs.rate_window;
   }
   if (system.species.size() >= 2) {
     small_ = large_ = 0;
@@ -200,6 +221,16 @@ void RunAnalysis::write_setup(const std::string& run_file) const {
     sub.set_attribute("depth", profiles_.depth);
     sub.set_attribute("start", profiles_.start);
   }
+  if (plugs_.bins > 0) {
+    const h5::Group sub = group.create_group("plugs");
+    sub.write("thresholds", plugs_.thresholds);
+    sub.set_attribute("bottom", plugs_.bottom);
+    sub.set_attribute("bin", plugs_.bin);
+    sub.set_attribute("bins", static_cast<std::int64_t>(plugs_.bins));
+    sub.set_attribute("area", plugs_.area);
+    sub.set_attribute("diameter", plugs_.diameter);
+    sub.set_attribute("min_bins", static_cast<std::int64_t>(plugs_.min_bins));
+  }
   file.flush();
 }
 
@@ -285,6 +316,17 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
     for (std::size_t i = 0; i < n; ++i) spin[i] = sim.spin(i);
     row.push_back({"profile_sums", profiles_.row_width(),
                    profile_sums(profiles_, position, velocity, spin, radius)});
+  }
+  if (plugs_.bins > 0) {
+    std::vector<double> height(n), by_id(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      height[i] = position[i][vertical_];
+      by_id[rank_of(ids_, p.id[i])] = height[i];
+    }
+    row.push_back({"axial_solid_fraction", static_cast<std::size_t>(plugs_.bins),
+                   axial_solid_fraction(height, radius, plugs_.bottom, plugs_.bin, plugs_.bins,
+                                        plugs_.area)});
+    row.push_back({"plug_height", n, by_id});
   }
   if (!tagged_ids_.empty()) {
     const std::vector<double>& previous = history_["tagged_impulse"];
@@ -394,6 +436,12 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
   if (const auto* sums = profiles_.heights.empty() ? nullptr : series("profile_sums")) {
     c.has_profiles = true;
     c.profiles = conclude_profiles(profiles_, times_, *sums);
+  }
+  if (plugs_.bins > 0) {
+    const auto* profiles = series("axial_solid_fraction");
+    const auto* heights = series("plug_height");
+    if (profiles != nullptr && heights != nullptr)
+      c.plugs = conclude_plugs(plugs_, times_, *profiles, *heights, ids_.size());
   }
   return c;
 }

@@ -15,7 +15,8 @@
 ///   gas_force_mean         S x 3: mean gas force (drag + pressure gradient) on one particle, N
 ///   porosity_seen          S: mean porosity at the species' particles
 /// (the last three with a gas), with tagged bodies their series (tagged_bodies.hpp), and with
-/// [analysis.profiles] the sums of the profiles across sections (section_profiles.hpp). The tags
+/// [analysis.profiles] the sums of the profiles across sections (section_profiles.hpp), and with
+/// [analysis.plugs] the axial solid fraction and every particle's height (plugs.hpp). The tags
 /// and start heights are stored in run.h5 /analysis so a resumed run carries on with them; the
 /// whole history is read back, so the conclusions always cover the run from t = 0.
 #include <cmath>
@@ -27,6 +28,7 @@
 #include "fluid/coupling.hpp"
 #include "scenarios/analysis/dispersion.hpp"
 #include "scenarios/analysis/mixing.hpp"
+#include "scenarios/analysis/plugs.hpp"
 #include "scenarios/analysis/section_profiles.hpp"
 #include "scenarios/analysis/tagged_bodies.hpp"
 #include "scenarios/scene/scene.hpp"
@@ -89,6 +91,7 @@ class RunAnalysis {
     TaggedConclusions tagged;                   ///< Tagged bodies (bodies = 0: none).
     bool has_profiles = false;                  ///< Profiles across sections measured.
     ProfileConclusions profiles;
+    std::vector<PlugConclusions> plugs;  ///< One per threshold (empty: no plug analysis).
   };
   Conclusions conclude(const CollisionMethod& sim) const;
 
@@ -103,6 +106,7 @@ class RunAnalysis {
   std::vector<std::uint64_t> tagged_ids_;  ///< Tagged bodies' particle ids (slot order).
   std::size_t tagged_partners_ = 0;        ///< Their partner categories: S species + W walls.
   ProfileGeometry profiles_;               ///< Profiles across sections (no heights: none).
+  PlugGeometry plugs_;                     ///< Plugs along the vertical axis (bins = 0: none).
   /// Every series this run may write and its width.
   std::vector<std::pair<std::string, std::size_t>> widths() const;
   /// Every series sampled so far (since t = 0), by name, row after row.

@@ -66,6 +66,29 @@ void read_analysis(TableReader& root, Scene& scene) {
     m->finish();
   }
   if (auto p = section->table("profiles")) read_profiles(*p, scene);
+  if (auto p = section->table("plugs")) {
+    PlugSettings& plugs = scene.analysis.plugs;
+    plugs.enabled = true;
+    const double threshold = p->number(
+        "threshold", 0.3,
+        Range{0.0, 1.0, true, true, "solid fraction at and above which a bin belongs to a plug"});
+    std::vector<double> others = p->numbers(
+        "sensitivity",
+        Range{0.0, 1.0, true, true, "further thresholds reported to show the choice's effect"});
+    if (!p->has("sensitivity")) others = {threshold - 0.1, threshold + 0.1};
+    plugs.thresholds = {threshold};
+    for (double t : others)
+      if (t > 0 && t < 1 && t != threshold) plugs.thresholds.push_back(t);
+    plugs.bin = p->number("bin", 0.0,
+                          Range{0.0, INFINITY, false, true,
+                                "bin length along the vertical axis, m (0: the largest diameter)"});
+    plugs.min_bins =
+        static_cast<int>(p->integer("min_bins", 2, 1, 1000, "bins the shortest plug spans"));
+    plugs.rate_window =
+        p->number("rate_window", 0.05,
+                  Range{0.0, INFINITY, true, true, "shortest window of the bed-top speeds, s"});
+    p->finish();
+  }
   if (auto f = section->table("fields")) {
     a.field_cells = read_cells(*f, "cells", {1, 1, 1});
     f->finish();

@@ -90,6 +90,16 @@ struct ProfileSettings {
   double start = 0;             ///< Samples before this time are left out of the averages, s.
 };
 
+/// [analysis.plugs]: plugs in a narrow tube (scenarios/analysis/plugs.hpp).
+struct PlugSettings {
+  bool enabled = false;
+  std::vector<double> thresholds{0.3, 0.2,
+                                 0.4};  ///< The scene's threshold first, then the sensitivity ones.
+  double bin = 0;             ///< Bin length along the vertical axis, m (0: the largest diameter).
+  int min_bins = 2;           ///< Shortest plug, bins.
+  double rate_window = 0.05;  ///< Shortest window of the bed-top speeds, s.
+};
+
 struct AnalysisSettings {
   /// Mixing: the particles of this species are tagged by their height at t = 0 (lower and upper
   /// half); -1: no mixing analysis.
@@ -103,6 +113,7 @@ struct AnalysisSettings {
   /// Particle ids of the tagged bodies ([[particles]] entries with tagged = true).
   std::vector<std::uint64_t> tagged_bodies;
   ProfileSettings profiles;  ///< Profiles across sections (none when heights is empty).
+  PlugSettings plugs;        ///< Plugs in a narrow tube.
 };
 
 struct Scene {

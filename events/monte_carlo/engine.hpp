@@ -62,6 +62,7 @@ struct MonteCarloState {
   double cell_size = 0;                    ///< The resolved cell size, m.
   double max_collisions_per_step = 0;      ///< Largest mean collisions per particle in a step so far.
   std::uint64_t bound_exceeded = 0;        ///< Thinning trials whose speed exceeded the bound.
+  double gas_work = 0;  ///< Work of the gas forces on the particles by step_start, J.
   std::vector<std::pair<std::string, double>> action_times;  ///< Next time of each action, s.
 };
 
@@ -144,6 +145,8 @@ class MonteCarloEngine final : public CollisionMethod {
   /// Sets the symmetric pair counts and pair_events from the directed counts.
   void derive_pair_counts(RunStatistics& statistics, const std::vector<std::uint64_t>& travelling) const;
   void hold_fixed_particles();
+  /// Translational and rotational kinetic energy of the particles' stored states, J.
+  double particles_kinetic_energy() const;
   /// The flight particle i flies now (ballistic under gravity unless relax flights).
   RelaxFlight flight_of(std::size_t i) const {
     return options_.flight_model == FlightModel::Relax ? flights_[i]
@@ -172,10 +175,17 @@ class MonteCarloEngine final : public CollisionMethod {
   // log_begin_[i + 1]).
   std::vector<Vec3> start_position_, start_velocity_, start_spin_;
   std::vector<Vec3> end_position_, end_velocity_, end_spin_;
+  /// Gas work on each particle after its last event in the step, J.
+  std::vector<double> end_gas_work_;
   std::vector<StepEvent> log_;
   std::vector<std::size_t> log_begin_;
   std::vector<std::int32_t> cell_;  ///< Each particle's collision cell at the step start.
 
+  /// Work of the gas forces on the particles, J: the relax flights' exact integrals up to each
+  /// particle's shown state (energies() adds the rest of each flight to time_) and the kinetic
+  /// energy that synchronising actions (the gas's kicks and fluid steps) gave.
+  double gas_work_ = 0;
+  double start_gas_work_ = 0;      ///< At step_start_, J.
   RunStatistics statistics_;       ///< As shown at time_.
   RunStatistics start_statistics_;  ///< At step_start_.
   TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }

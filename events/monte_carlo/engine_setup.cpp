@@ -52,6 +52,7 @@ MonteCarloEngine::MonteCarloEngine(System system, MonteCarloOptions options, Mon
   cell_size_ = state.cell_size;
   max_collisions_per_step_ = state.max_collisions_per_step;
   bound_exceeded_ = state.bound_exceeded;
+  gas_work_ = state.gas_work;
   restored_action_times_ = std::move(state.action_times);
   grid_ = CollisionGrid(system_.domain, cell_size_, species);
   resolve_elastic_speed();

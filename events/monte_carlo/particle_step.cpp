@@ -12,9 +12,17 @@
 namespace carom {
 
 namespace {
-/// Flies r, v over s seconds of the flight f (exact: ballistic when f.rate = 0).
-void fly(Vec3& r, Vec3& v, const RelaxFlight& f, double s) {
+/// Flies r, v over s seconds of the flight f (exact: ballistic when f.rate = 0). With `gas`
+/// (relax flights: f holds the gas forces) the work per unit mass that the gas forces did on the
+/// way is added to `work`, J/kg (RelaxFlight::move_booking_gas_work: the exact integral, and
+/// the same r, v bit for bit).
+void fly(Vec3& r, Vec3& v, const RelaxFlight& f, double s, bool gas, const Vec3& gravity,
+         double& work) {
   if (s <= 0.0) return;
+  if (gas) {
+    work += f.move_booking_gas_work(r, v, s, gravity);
+    return;
+  }
   r += f.displacement(v, s);
   v = f.velocity(v, s);
 }
@@ -33,6 +41,7 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
   const ParticleStore& p = system_.particles;
   Vec3 r = start_position_[i], v = start_velocity_[i], w = start_spin_[i];
   const std::uint32_t s = p.species[i];
+  end_gas_work_[i] = 0.0;
   if (system_.species[s].fixed) {
     end_position_[i] = r;
     end_velocity_[i] = v;
@@ -40,6 +49,11 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     return;
   }
   const RelaxFlight f = flight_of(i);
+  // Relax flights carry the gas forces: their work is booked flight by flight (J/kg since the
+  // particle's last logged event, handed to the next event or to end_gas_work_).
+  const bool gas = options_.flight_model == FlightModel::Relax;
+  const Vec3& gravity = system_.flight.gravity;
+  double flown_work = 0.0;
   const double a = p.radius[i], mass = p.mass[i], inertia = p.inertia[i];
   const std::size_t species = system_.species.size();
   const bool mean_velocity = options_.frequency == CollisionFrequency::MeanVelocity;
@@ -108,7 +122,7 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
       throw MethodFailure("monte_carlo_event_stall", out.str());
     }
     if (wall_in <= candidate_in) {
-      fly(r, v, f, wall_in);
+      fly(r, v, f, wall_in, gas, gravity, flown_work);
       clock = std::min(clock + wall_in, step_end_);
       if (wall_in == 0.0 && ++instant_wall_impacts > 1000) {
         std::ostringstream out;
@@ -125,11 +139,13 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
       const CollisionOutcome outcome =
           collide(law, normal, ContactBody{v, w, 1.0 / mass, a, 1.0 / inertia},
                   ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
-      log_.push_back(StepEvent{clock, r, v, w, -1 - wall, outcome.impulse, Vec3::Zero(), outcome.dissipated});
+      log_.push_back(StepEvent{clock, r, v, w, -1 - wall, outcome.impulse, Vec3::Zero(),
+                               outcome.dissipated, mass * flown_work});
+      flown_work = 0.0;
       continue;
     }
 
-    fly(r, v, f, candidate_in);
+    fly(r, v, f, candidate_in, gas, gravity, flown_work);
     clock = std::min(clock + candidate_in, step_end_);
     // Which species this candidate is of, in proportion to the candidate rates.
     double pick = rng_.uniform() * total_rate;
@@ -165,9 +181,12 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
                 ContactBody{partner_velocity, partner_spin, kind.fixed ? 0.0 : 1.0 / partner_mass, partner_radius,
                             kind.fixed ? 0.0 : 1.0 / partner_inertia});
     log_.push_back(StepEvent{clock, r, v, w, static_cast<std::int32_t>(t), outcome.impulse,
-                             (a + partner_radius) * normal, before - kinetic_energy(v, w, mass, inertia)});
+                             (a + partner_radius) * normal,
+                             before - kinetic_energy(v, w, mass, inertia), mass * flown_work});
+    flown_work = 0.0;
   }
-  fly(r, v, f, step_end_ - clock);
+  fly(r, v, f, step_end_ - clock, gas, gravity, flown_work);
+  end_gas_work_[i] = mass * flown_work;
   end_position_[i] = r;
   end_velocity_[i] = v;
   end_spin_[i] = w;

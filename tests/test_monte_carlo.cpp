@@ -325,28 +325,32 @@ TEST(MonteCarloDeterminism, SameSeedSameBitsWhereverTheRunIsCut) {
 
 // save_state inside a step, restore from the HDF5 file, continue: bit for bit the same as the
 // uninterrupted run (positions, velocities, spins, counters, random numbers), also when saved
-// on a step boundary.
+// on a step boundary; with either partner model.
 TEST(MonteCarloDeterminism, SaveAndRestoreResumesBitForBit) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "carom_mc_resume";
   std::filesystem::create_directories(dir);
   MonteCarloOptions options;
   options.time_step = 1e-3;
-  for (double save_at : {0.05037, 0.05}) {
-    MonteCarloEngine straight(walled_box(12), options), first(walled_box(12), options);
-    straight.run_until(0.12);
-    first.run_until(save_at);
-    const std::string path = (dir / "state.h5").string();
-    {
-      h5::File file = h5::File::create(path);
-      first.save_state(file.create_group("method"));
+  for (const PartnerModel partner : {PartnerModel::Gaussian, PartnerModel::CellParticle})
+    for (double save_at : {0.05037, 0.05}) {
+      options.partner = partner;
+      MonteCarloEngine straight(walled_box(12), options), first(walled_box(12), options);
+      straight.run_until(0.12);
+      first.run_until(save_at);
+      const std::string path = (dir / "state.h5").string();
+      {
+        h5::File file = h5::File::create(path);
+        first.save_state(file.create_group("method"));
+      }
+      const h5::File file = h5::File::open(path, false);
+      MonteCarloEngine resumed(walled_box(12), options,
+                               read_monte_carlo_state(file.open_group("method")));
+      EXPECT_EQ(resumed.time(), save_at);
+      for (std::size_t i = 0; i < first.particle_count(); ++i)
+        ASSERT_EQ(resumed.position(i), first.position(i));
+      resumed.run_until(0.12);
+      expect_identical(straight, resumed);
     }
-    const h5::File file = h5::File::open(path, false);
-    MonteCarloEngine resumed(walled_box(12), options, read_monte_carlo_state(file.open_group("method")));
-    EXPECT_EQ(resumed.time(), save_at);
-    for (std::size_t i = 0; i < first.particle_count(); ++i) ASSERT_EQ(resumed.position(i), first.position(i));
-    resumed.run_until(0.12);
-    expect_identical(straight, resumed);
-  }
   std::filesystem::remove_all(dir);
 }
 
@@ -473,12 +477,16 @@ time_step = 1e-4
 cell_size = 2.5e-3
 frequency = "mean_velocity"
 contact_value = "enskog"
+partner = "cell_particle"
 seed = 17
-)", "mc.toml");
+)",
+                            "mc.toml");
   EXPECT_EQ(scene.method.kind, MethodKind::MonteCarlo);
   EXPECT_EQ(scene.method.monte_carlo.time_step, 1e-4);
   EXPECT_EQ(scene.method.monte_carlo.frequency, CollisionFrequency::MeanVelocity);
   EXPECT_EQ(scene.method.monte_carlo.contact_value, ContactValue::Enskog);
+  EXPECT_EQ(scene.method.monte_carlo.partner, PartnerModel::CellParticle);
+  EXPECT_EQ(parse_scene(base, "mc.toml").method.monte_carlo.partner, PartnerModel::Gaussian);
   EXPECT_EQ(scene.method.monte_carlo.seed, 17u);
   build_initial_state(scene);
   auto sim = make_method(scene.system, scene.method);
@@ -491,6 +499,8 @@ seed = 17
   EXPECT_EQ(parse_scene(base + "[monte_carlo]\ntime_step = 1e-4\n", "mc.toml").method.monte_carlo.time_step, 1e-4);
   EXPECT_THROW(parse_scene(base + "[monte_carlo]\ntime_step = -1\n", "mc.toml"), SceneError);
   EXPECT_THROW(parse_scene(base + "[method]\nkind = \"monte_carlo\"\n[monte_carlo]\nfrequency = \"mean\"\n", "mc.toml"),
+               SceneError);
+  EXPECT_THROW(parse_scene(base + "[monte_carlo]\npartner = \"particle\"\n", "mc.toml"),
                SceneError);
 }
 

@@ -113,6 +113,8 @@ void MonteCarloEngine::compute_step() {
   cell_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     cell_[i] = grid_.add(p.position[i], p.species[i], p.radius[i], p.velocity[i], p.spin[i]);
+  if (options_.partner == PartnerModel::CellParticle)
+    grid_.list_members(cell_, p.species, p.velocity);
   log_.clear();
   log_begin_.assign(n + 1, 0);
   step_bound_exceeded_ = 0;

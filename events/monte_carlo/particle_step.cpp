@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <sstream>
 
 #include "events/laws/walton.hpp"
@@ -57,6 +58,7 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
   const double a = p.radius[i], mass = p.mass[i], inertia = p.inertia[i];
   const std::size_t species = system_.species.size();
   const bool mean_velocity = options_.frequency == CollisionFrequency::MeanVelocity;
+  const bool cell_particle = options_.partner == PartnerModel::CellParticle;
 
   // The partners of each species in this particle's cell, and the part of the candidate rate
   // that does not depend on speed: c pi (R1 + R0)^2 n g.
@@ -80,6 +82,24 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
                         contact_value(options_.contact_value, phi, xi2, 2.0 * a, 2.0 * partners[t].mean_radius);
   }
 
+  // A partner of species t: its velocity, and its spin (CellParticle: one of the cell's other
+  // particles of species t at random, as at the step start; Gaussian: the mean spin).
+  Vec3 partner_spin = Vec3::Zero();
+  auto draw_partner = [&](std::size_t t) -> Vec3 {
+    if (!cell_particle) {
+      partner_spin = partners[t].mean_spin;
+      return sample_partner_velocity(partners[t], rng_);
+    }
+    const std::span<const std::uint32_t> list = grid_.members(cell, static_cast<std::uint32_t>(t));
+    const std::size_t others = list.size() - (t == s ? 1 : 0);
+    const std::size_t k =
+        std::min(others - 1, static_cast<std::size_t>(rng_.uniform() * double(others)));
+    std::uint32_t j = list[k];
+    if (j == i) j = list.back();  // i is not last, so the others stay equally likely
+    partner_spin = start_spin_[j];
+    return start_velocity_[j];
+  };
+
   double clock = step_start_;
   int instant_wall_impacts = 0;
   std::size_t events_here = 0;
@@ -96,8 +116,16 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
         candidate_rate[t] = 0.0;
         continue;
       }
-      bound[t] = (v - partners[t].mean_velocity).norm() + drift +
-                 (mean_velocity ? 0.0 : kSpreadBound * partners[t].velocity_std.norm());
+      // CellParticle: |V1 - V0| <= |V1 - <V>| + |V0 - <V>| with <V> the mean of every particle
+      // of the cell, an exact bound.
+      if (mean_velocity)
+        bound[t] = (v - partners[t].mean_velocity).norm() + drift;
+      else if (cell_particle)
+        bound[t] = (v - grid_.mean_velocity(cell, static_cast<std::uint32_t>(t))).norm() + drift +
+                   grid_.largest_deviation(cell, static_cast<std::uint32_t>(t));
+      else
+        bound[t] = (v - partners[t].mean_velocity).norm() + drift +
+                   kSpreadBound * partners[t].velocity_std.norm();
       candidate_rate[t] = rate_per_speed[t] * bound[t];
       total_rate += candidate_rate[t];
     }
@@ -160,12 +188,12 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     if (mean_velocity) {
       speed = (v - partner.mean_velocity).norm();
     } else {
-      partner_velocity = sample_partner_velocity(partner, rng_);
+      partner_velocity = draw_partner(t);
       speed = (v - partner_velocity).norm();
     }
     if (speed > bound[t]) ++step_bound_exceeded_;
     if (rng_.uniform() * bound[t] >= speed) continue;  // thinned: no collision
-    if (mean_velocity) partner_velocity = sample_partner_velocity(partner, rng_);
+    if (mean_velocity) partner_velocity = draw_partner(t);
     const Vec3 relative = v - partner_velocity;
     if (relative.squaredNorm() == 0.0) continue;
     const Vec3 normal = sample_impact_normal(relative, rng_);
@@ -174,7 +202,6 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     const double partner_radius = partner.mean_radius;
     const double partner_mass = kind.density * 4.0 / 3.0 * std::numbers::pi * std::pow(partner_radius, 3);
     const double partner_inertia = 0.4 * partner_mass * partner_radius * partner_radius;
-    Vec3 partner_spin = partner.mean_spin;
     const double before = kinetic_energy(v, w, mass, inertia);
     const CollisionOutcome outcome =
         collide(system_.materials.pair(s, t), normal, ContactBody{v, w, 1.0 / mass, a, 1.0 / inertia},

@@ -64,8 +64,8 @@ RateMeasurement measure_mc_rate(MonteCarloEngine& mc, double duration) {
 // Reference: the integral of omega(T(t)) over the run (T sampled 50 times). Tolerance 2 %:
 // the count has ~1e5 travelling collisions, relative Poisson error 0.3 % (measured scatter over
 // seeds is about that); the time step (nu dt = 0.1) biases nothing (exact Poisson timing within
-// a step); the Gaussian partner fitted to 500 particles heats the gas by ~1e-3 T per collision
-// (engine.hpp), which the stretch-wise reference follows. The mean_velocity form's count is
+// a step); the Gaussian partner fitted to 500 particles heats the gas by ~2e-4 of its energy
+// per collision (0.09/k, engine.hpp), which the stretch-wise reference follows. The mean_velocity form's count is
 // printed beside it; it is not a test of that form (its gas cools: next test).
 TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
   GranularGasSpec spec;
@@ -113,7 +113,7 @@ TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
 // (sqrt(2) <|V1|> = <|V1 - V0|>), but it picks collisions by |V1| and partners without the
 // weight |V1 - V0|, so energy flows out of the gas: T falls by more than 20 % within 10
 // collisions per particle (measured: 0.87 after 1, 0.29 after 15). The relative-speed form
-// keeps T within 5 % (its random walk and the 1/(3k) heating of a cell of k = 500 particles).
+// keeps T within 5 % (its random walk and the 0.09/k heating of a cell of k = 500 particles).
 TEST(MonteCarloGas, MeanVelocityFormCoolsAnElasticGas) {
   GranularGasSpec spec;
   spec.count = 4000;

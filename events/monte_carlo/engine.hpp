@@ -18,7 +18,17 @@
 ///   - wall impacts are exact event times (ballistic or relax contact times of the walls),
 ///     taken in time order with the collisions;
 ///   - flights are exact: ballistic under gravity, or the RelaxFlight of the current fluid
-///     step (RelaxFlight::velocity / displacement over each stretch).
+///     step (RelaxFlight::velocity / displacement over each stretch), whose gas work is booked
+///     exactly (RelaxFlight::move_booking_gas_work), as is the kinetic energy that synchronising
+///     actions (the gas's kicks) give: kinetic + potential + dissipated - gas work is constant.
+/// Energy of an elastic gas: each collision gives the particle, on average, half the energy
+/// difference with its partner, which cancels over the gas when the partners (weighted by
+/// |V1 - V0|) are the gas's own velocities. Gaussian partners fitted to the k particles of a
+/// cell (the default, the published model) are not: an elastic gas heats by about 0.09/k of
+/// its energy per collision (measured: 0.0083, 0.0049, 0.0013 per collision at k = 10.6, 20.6,
+/// 49; scenarios/chart/CHARTS.md). Partners drawn from the cell's particles
+/// (PartnerModel::CellParticle) remove it. Either way the energy random-walks (the partner is
+/// fictitious): sd about sqrt(c / N) of it after c collisions per particle of N particles.
 /// Step boundaries: every time_step, cut to land on every action's time. run_until's end is
 /// not a boundary: the step holding it is computed whole and the run shows the particles as of
 /// their last event before it (step_log.hpp), so where a run is cut into calls never changes

@@ -48,7 +48,7 @@ struct MonteCarloOptions {
   double time_step = 0.0;
   /// Edge of the collision cells, m (cells per axis: the box edge over this, rounded down, at
   /// least 1). <= 0 (default): 4 largest diameters, or more so that a cell holds 32 particles
-  /// on average (fewer: the cell means random-walk and an elastic gas heats, engine.cpp).
+  /// on average (fewer: Gaussian partners heat an elastic gas more, engine.hpp).
   double cell_size = 0.0;
   CollisionFrequency frequency = CollisionFrequency::MeanRelativeSpeed;
   ContactValue contact_value = ContactValue::None;

@@ -145,8 +145,9 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
 
     if (++events_here > 100000) {
       std::ostringstream out;
-      out << "particle " << p.id[i] << " at " << r.transpose() << " m had 100000 collisions and wall impacts in "
-          << "one step at t = " << clock << " s; reduce [monte_carlo] time_step";
+      out << "particle " << p.id[i] << " at " << r.transpose() << " m had 100000 collision trials and wall impacts ("
+          << (log_.size() - log_begin_[i]) << " impacts and collisions) in one step at t = " << clock
+          << " s; reduce [monte_carlo] time_step";
       throw MethodFailure("monte_carlo_event_stall", out.str());
     }
     if (wall_in <= candidate_in) {

@@ -64,8 +64,8 @@ RateMeasurement measure_mc_rate(MonteCarloEngine& mc, double duration) {
 // Reference: the integral of omega(T(t)) over the run (T sampled 50 times). Tolerance 2 %:
 // the count has ~1e5 travelling collisions, relative Poisson error 0.3 % (measured scatter over
 // seeds is about that); the time step (nu dt = 0.1) biases nothing (exact Poisson timing within
-// a step); the Gaussian partner fitted to 500 particles heats the gas by ~1e-3 T per collision
-// (engine.hpp), which the stretch-wise reference follows. The mean_velocity form's count is
+// a step); the Gaussian partner fitted to 500 particles heats the gas by ~2e-4 of its energy
+// per collision (0.09/k, engine.hpp), which the stretch-wise reference follows. The mean_velocity form's count is
 // printed beside it; it is not a test of that form (its gas cools: next test).
 TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
   GranularGasSpec spec;
@@ -113,7 +113,7 @@ TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
 // (sqrt(2) <|V1|> = <|V1 - V0|>), but it picks collisions by |V1| and partners without the
 // weight |V1 - V0|, so energy flows out of the gas: T falls by more than 20 % within 10
 // collisions per particle (measured: 0.87 after 1, 0.29 after 15). The relative-speed form
-// keeps T within 5 % (its random walk and the 1/(3k) heating of a cell of k = 500 particles).
+// keeps T within 5 % (its random walk and the 0.09/k heating of a cell of k = 500 particles).
 TEST(MonteCarloGas, MeanVelocityFormCoolsAnElasticGas) {
   GranularGasSpec spec;
   spec.count = 4000;
@@ -325,28 +325,32 @@ TEST(MonteCarloDeterminism, SameSeedSameBitsWhereverTheRunIsCut) {
 
 // save_state inside a step, restore from the HDF5 file, continue: bit for bit the same as the
 // uninterrupted run (positions, velocities, spins, counters, random numbers), also when saved
-// on a step boundary.
+// on a step boundary; with either partner model.
 TEST(MonteCarloDeterminism, SaveAndRestoreResumesBitForBit) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "carom_mc_resume";
   std::filesystem::create_directories(dir);
   MonteCarloOptions options;
   options.time_step = 1e-3;
-  for (double save_at : {0.05037, 0.05}) {
-    MonteCarloEngine straight(walled_box(12), options), first(walled_box(12), options);
-    straight.run_until(0.12);
-    first.run_until(save_at);
-    const std::string path = (dir / "state.h5").string();
-    {
-      h5::File file = h5::File::create(path);
-      first.save_state(file.create_group("method"));
+  for (const PartnerModel partner : {PartnerModel::Gaussian, PartnerModel::CellParticle})
+    for (double save_at : {0.05037, 0.05}) {
+      options.partner = partner;
+      MonteCarloEngine straight(walled_box(12), options), first(walled_box(12), options);
+      straight.run_until(0.12);
+      first.run_until(save_at);
+      const std::string path = (dir / "state.h5").string();
+      {
+        h5::File file = h5::File::create(path);
+        first.save_state(file.create_group("method"));
+      }
+      const h5::File file = h5::File::open(path, false);
+      MonteCarloEngine resumed(walled_box(12), options,
+                               read_monte_carlo_state(file.open_group("method")));
+      EXPECT_EQ(resumed.time(), save_at);
+      for (std::size_t i = 0; i < first.particle_count(); ++i)
+        ASSERT_EQ(resumed.position(i), first.position(i));
+      resumed.run_until(0.12);
+      expect_identical(straight, resumed);
     }
-    const h5::File file = h5::File::open(path, false);
-    MonteCarloEngine resumed(walled_box(12), options, read_monte_carlo_state(file.open_group("method")));
-    EXPECT_EQ(resumed.time(), save_at);
-    for (std::size_t i = 0; i < first.particle_count(); ++i) ASSERT_EQ(resumed.position(i), first.position(i));
-    resumed.run_until(0.12);
-    expect_identical(straight, resumed);
-  }
   std::filesystem::remove_all(dir);
 }
 
@@ -473,12 +477,16 @@ time_step = 1e-4
 cell_size = 2.5e-3
 frequency = "mean_velocity"
 contact_value = "enskog"
+partner = "cell_particle"
 seed = 17
-)", "mc.toml");
+)",
+                            "mc.toml");
   EXPECT_EQ(scene.method.kind, MethodKind::MonteCarlo);
   EXPECT_EQ(scene.method.monte_carlo.time_step, 1e-4);
   EXPECT_EQ(scene.method.monte_carlo.frequency, CollisionFrequency::MeanVelocity);
   EXPECT_EQ(scene.method.monte_carlo.contact_value, ContactValue::Enskog);
+  EXPECT_EQ(scene.method.monte_carlo.partner, PartnerModel::CellParticle);
+  EXPECT_EQ(parse_scene(base, "mc.toml").method.monte_carlo.partner, PartnerModel::Gaussian);
   EXPECT_EQ(scene.method.monte_carlo.seed, 17u);
   build_initial_state(scene);
   auto sim = make_method(scene.system, scene.method);
@@ -491,6 +499,8 @@ seed = 17
   EXPECT_EQ(parse_scene(base + "[monte_carlo]\ntime_step = 1e-4\n", "mc.toml").method.monte_carlo.time_step, 1e-4);
   EXPECT_THROW(parse_scene(base + "[monte_carlo]\ntime_step = -1\n", "mc.toml"), SceneError);
   EXPECT_THROW(parse_scene(base + "[method]\nkind = \"monte_carlo\"\n[monte_carlo]\nfrequency = \"mean\"\n", "mc.toml"),
+               SceneError);
+  EXPECT_THROW(parse_scene(base + "[monte_carlo]\npartner = \"particle\"\n", "mc.toml"),
                SceneError);
 }
 

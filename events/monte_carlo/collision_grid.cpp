@@ -72,6 +72,25 @@ PartnerStatistics CollisionGrid::partners(std::int32_t cell, std::uint32_t s,
   return p;
 }
 
+void CollisionGrid::list_members(const std::vector<std::int32_t>& cell,
+                                 const std::vector<std::uint32_t>& species,
+                                 const std::vector<Vec3>& velocity) {
+  const std::size_t lists = cell_count() * species_;
+  member_begin_.assign(lists + 1, 0);
+  for (std::size_t i = 0; i < cell.size(); ++i)
+    ++member_begin_[static_cast<std::size_t>(cell[i]) * species_ + species[i] + 1];
+  for (std::size_t k = 0; k < lists; ++k) member_begin_[k + 1] += member_begin_[k];
+  members_.resize(cell.size());
+  std::vector<std::size_t> next(member_begin_.begin(), member_begin_.end() - 1);
+  largest_deviation_.assign(lists, 0.0);
+  for (std::size_t i = 0; i < cell.size(); ++i) {
+    const std::size_t k = static_cast<std::size_t>(cell[i]) * species_ + species[i];
+    members_[next[k]++] = static_cast<std::uint32_t>(i);
+    const double deviation = (velocity[i] - mean_velocity(cell[i], species[i])).norm();
+    largest_deviation_[k] = std::max(largest_deviation_[k], deviation);
+  }
+}
+
 double CollisionGrid::solid_fraction(std::int32_t cell) const {
   double volume = 0.0;
   for (std::size_t s = 0; s < species_; ++s) volume += sums(cell, static_cast<std::uint32_t>(s)).radius_cubed;

@@ -10,6 +10,7 @@
 /// partners would be 1/8 too high).
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/domain.hpp"
@@ -58,6 +59,25 @@ class CollisionGrid {
   std::int32_t cell_of(const Vec3& r) const;
   /// The partners of species s in `cell`; `own` (a particle of that cell) is left out when given.
   PartnerStatistics partners(std::int32_t cell, std::uint32_t s, const OwnContribution* own) const;
+  /// Lists the particles of each cell and species, for partners drawn from a cell's particles
+  /// (PartnerModel::CellParticle); call after every add(): particle i of species species[i],
+  /// velocity velocity[i] (m/s), lies in cell[i].
+  void list_members(const std::vector<std::int32_t>& cell,
+                    const std::vector<std::uint32_t>& species, const std::vector<Vec3>& velocity);
+  /// The particles (indices) of species s in `cell`, in index order, as last listed.
+  std::span<const std::uint32_t> members(std::int32_t cell, std::uint32_t s) const {
+    const std::size_t k = static_cast<std::size_t>(cell) * species_ + s;
+    return {members_.data() + member_begin_[k], member_begin_[k + 1] - member_begin_[k]};
+  }
+  /// Mean velocity of every particle of species s in `cell` (none left out), m/s.
+  Vec3 mean_velocity(std::int32_t cell, std::uint32_t s) const {
+    const Sums& sum = sums(cell, s);
+    return sum.count > 0.5 ? Vec3(sum.velocity / sum.count) : Vec3::Zero();
+  }
+  /// The largest |v_j - mean_velocity(cell, s)| over the listed particles, m/s.
+  double largest_deviation(std::int32_t cell, std::uint32_t s) const {
+    return largest_deviation_[static_cast<std::size_t>(cell) * species_ + s];
+  }
   /// Solid volume fraction of `cell` (every particle counted), and xi2 = (pi/6) sum_k n_k d_k^2
   /// (1/m), for the contact value.
   double solid_fraction(std::int32_t cell) const;
@@ -86,6 +106,11 @@ class CollisionGrid {
   Vec3 size_ = Vec3::Ones();
   std::size_t species_ = 0;
   std::vector<Sums> sums_;  ///< [cell * species + s].
+  // list_members: the particles of [cell * species + s] are members_[member_begin_[k] ..
+  // member_begin_[k + 1]); largest_deviation_[k] as largest_deviation().
+  std::vector<std::size_t> member_begin_;
+  std::vector<std::uint32_t> members_;
+  std::vector<double> largest_deviation_;
 };
 
 }  // namespace carom

@@ -53,11 +53,15 @@ void MonteCarloEngine::fire_due_actions() {
       if (a.next_time > time_) continue;
       fired = true;
       if (a.step) {
+        // A synchronising action is the gas's hook (the fluid step, a drag or spin kick): the
+        // kinetic energy (and spin energy) it gives the particles is work done by the gas.
         ParticleStore& p = system_.particles;
+        const double kinetic_before = particles_kinetic_energy();
         GlobalStep step{time_, p, flights_};
         a.step(step);
         if (flights_.size() != p.size()) throw std::logic_error(a.name + " changed the number of flights");
         hold_fixed_particles();
+        gas_work_ += particles_kinetic_energy() - kinetic_before;
       } else {
         a.action();
       }
@@ -100,6 +104,8 @@ void MonteCarloEngine::compute_step() {
   start_position_ = p.position;
   start_velocity_ = p.velocity;
   start_spin_ = p.spin;
+  start_gas_work_ = gas_work_;
+  end_gas_work_.resize(n);
   end_position_.resize(n);
   end_velocity_.resize(n);
   end_spin_.resize(n);
@@ -107,6 +113,8 @@ void MonteCarloEngine::compute_step() {
   cell_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     cell_[i] = grid_.add(p.position[i], p.species[i], p.radius[i], p.velocity[i], p.spin[i]);
+  if (options_.partner == PartnerModel::CellParticle)
+    grid_.list_members(cell_, p.species, p.velocity);
   log_.clear();
   log_begin_.assign(n + 1, 0);
   step_bound_exceeded_ = 0;
@@ -144,9 +152,14 @@ void MonteCarloEngine::commit_step() {
   ParticleStore& p = system_.particles;
   statistics_ = start_statistics_;
   travelling_ = start_travelling_;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1]; ++k)
+  gas_work_ = start_gas_work_;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1]; ++k) {
       book(log_[k], i, p.species[i], statistics_, travelling_);
+      gas_work_ += log_[k].gas_work;
+    }
+    gas_work_ += end_gas_work_[i];
+  }
   derive_pair_counts(statistics_, travelling_);
   ++statistics_.events;
   bound_exceeded_ += step_bound_exceeded_;
@@ -165,6 +178,7 @@ void MonteCarloEngine::present(double t) {
   ParticleStore& p = system_.particles;
   statistics_ = start_statistics_;
   travelling_ = start_travelling_;
+  gas_work_ = start_gas_work_;
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.position[i] = start_position_[i];
     p.velocity[i] = start_velocity_[i];
@@ -173,6 +187,7 @@ void MonteCarloEngine::present(double t) {
     for (std::size_t k = log_begin_[i]; k < log_begin_[i + 1] && log_[k].time <= t; ++k) {
       const StepEvent& e = log_[k];
       book(e, i, p.species[i], statistics_, travelling_);
+      gas_work_ += e.gas_work;
       p.position[i] = e.position;
       p.velocity[i] = e.velocity;
       p.spin[i] = e.spin;
@@ -241,7 +256,24 @@ Energies MonteCarloEngine::energies() const {
     e.potential -= p.mass[i] * system_.flight.gravity.dot(position(i));
   }
   e.dissipated = statistics_.dissipated_energy;
+  e.gas_work = gas_work_;
+  // The gas's work on each relax flight from the particle's shown state to now, not yet booked
+  // (the same flight, bit for bit, as position() and velocity()).
+  if (options_.flight_model == FlightModel::Relax)
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      Vec3 r = p.position[i], v = p.velocity[i];
+      e.gas_work += p.mass[i] * flights_[i].move_booking_gas_work(r, v, time_ - p.clock[i],
+                                                                  system_.flight.gravity);
+    }
   return e;
+}
+
+double MonteCarloEngine::particles_kinetic_energy() const {
+  const ParticleStore& p = system_.particles;
+  double sum = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    sum += 0.5 * (p.mass[i] * p.velocity[i].squaredNorm() + p.inertia[i] * p.spin[i].squaredNorm());
+  return sum;
 }
 
 std::vector<MethodQuantity> MonteCarloEngine::quantities() const {
@@ -270,6 +302,7 @@ MonteCarloState MonteCarloEngine::state() const {
   s.cell_size = cell_size_;
   s.max_collisions_per_step = max_collisions_per_step_;
   s.bound_exceeded = bound_exceeded_;
+  s.gas_work = computed_ ? start_gas_work_ : gas_work_;
   if (computed_) {
     s.particles.position = start_position_;
     s.particles.velocity = start_velocity_;

@@ -18,7 +18,17 @@
 ///   - wall impacts are exact event times (ballistic or relax contact times of the walls),
 ///     taken in time order with the collisions;
 ///   - flights are exact: ballistic under gravity, or the RelaxFlight of the current fluid
-///     step (RelaxFlight::velocity / displacement over each stretch).
+///     step (RelaxFlight::velocity / displacement over each stretch), whose gas work is booked
+///     exactly (RelaxFlight::move_booking_gas_work), as is the kinetic energy that synchronising
+///     actions (the gas's kicks) give: kinetic + potential + dissipated - gas work is constant.
+/// Energy of an elastic gas: each collision gives the particle, on average, half the energy
+/// difference with its partner, which cancels over the gas when the partners (weighted by
+/// |V1 - V0|) are the gas's own velocities. Gaussian partners fitted to the k particles of a
+/// cell (the default, the published model) are not: an elastic gas heats by about 0.09/k of
+/// its energy per collision (measured: 0.0083, 0.0049, 0.0013 per collision at k = 10.6, 20.6,
+/// 49; scenarios/chart/CHARTS.md). Partners drawn from the cell's particles
+/// (PartnerModel::CellParticle) remove it. Either way the energy random-walks (the partner is
+/// fictitious): sd about sqrt(c / N) of it after c collisions per particle of N particles.
 /// Step boundaries: every time_step, cut to land on every action's time. run_until's end is
 /// not a boundary: the step holding it is computed whole and the run shows the particles as of
 /// their last event before it (step_log.hpp), so where a run is cut into calls never changes
@@ -62,6 +72,7 @@ struct MonteCarloState {
   double cell_size = 0;                    ///< The resolved cell size, m.
   double max_collisions_per_step = 0;      ///< Largest mean collisions per particle in a step so far.
   std::uint64_t bound_exceeded = 0;        ///< Thinning trials whose speed exceeded the bound.
+  double gas_work = 0;  ///< Work of the gas forces on the particles by step_start, J.
   std::vector<std::pair<std::string, double>> action_times;  ///< Next time of each action, s.
 };
 
@@ -144,6 +155,8 @@ class MonteCarloEngine final : public CollisionMethod {
   /// Sets the symmetric pair counts and pair_events from the directed counts.
   void derive_pair_counts(RunStatistics& statistics, const std::vector<std::uint64_t>& travelling) const;
   void hold_fixed_particles();
+  /// Translational and rotational kinetic energy of the particles' stored states, J.
+  double particles_kinetic_energy() const;
   /// The flight particle i flies now (ballistic under gravity unless relax flights).
   RelaxFlight flight_of(std::size_t i) const {
     return options_.flight_model == FlightModel::Relax ? flights_[i]
@@ -172,10 +185,17 @@ class MonteCarloEngine final : public CollisionMethod {
   // log_begin_[i + 1]).
   std::vector<Vec3> start_position_, start_velocity_, start_spin_;
   std::vector<Vec3> end_position_, end_velocity_, end_spin_;
+  /// Gas work on each particle after its last event in the step, J.
+  std::vector<double> end_gas_work_;
   std::vector<StepEvent> log_;
   std::vector<std::size_t> log_begin_;
   std::vector<std::int32_t> cell_;  ///< Each particle's collision cell at the step start.
 
+  /// Work of the gas forces on the particles, J: the relax flights' exact integrals up to each
+  /// particle's shown state (energies() adds the rest of each flight to time_) and the kinetic
+  /// energy that synchronising actions (the gas's kicks and fluid steps) gave.
+  double gas_work_ = 0;
+  double start_gas_work_ = 0;      ///< At step_start_, J.
   RunStatistics statistics_;       ///< As shown at time_.
   RunStatistics start_statistics_;  ///< At step_start_.
   TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }

@@ -52,6 +52,7 @@ MonteCarloEngine::MonteCarloEngine(System system, MonteCarloOptions options, Mon
   cell_size_ = state.cell_size;
   max_collisions_per_step_ = state.max_collisions_per_step;
   bound_exceeded_ = state.bound_exceeded;
+  gas_work_ = state.gas_work;
   restored_action_times_ = std::move(state.action_times);
   grid_ = CollisionGrid(system_.domain, cell_size_, species);
   resolve_elastic_speed();
@@ -117,10 +118,9 @@ void MonteCarloEngine::resolve_time_step_and_cells() {
   cell_size_ = options_.cell_size;
   if (!(cell_size_ > 0.0)) {
     // 4 largest diameters, or more so that a cell holds 32 particles on average: with k
-    // particles a cell, each cell's mean velocity random-walks (the fictitious partners do not
-    // conserve momentum) and an elastic gas heats by ~1/(3k) of T per collision (measured:
-    // T x 1.5 after 43 collisions per particle with k = 12, x 1.14 with k = 70, none seen
-    // with k = 325).
+    // particles a cell, Gaussian partners (fitted to those k) heat an elastic gas by about
+    // 0.09/k of its energy per collision (engine.hpp; measured: x 1.44 after 44 collisions per
+    // particle with k = 10.6, x 1.06 after 41 with k = 49).
     cell_size_ = n > 0 ? std::max(4.0 * largest_diameter, std::cbrt(32.0 * volume / double(n)))
                        : system_.domain.length().maxCoeff();
   }

@@ -21,6 +21,21 @@ enum class CollisionFrequency {
   MeanRelativeSpeed,
 };
 
+/// Where a collision's fictitious partner comes from.
+enum class PartnerModel {
+  /// Oesterle & Petitjean, Sommerfeld: velocity drawn from the Gaussians of the cell's mean and
+  /// standard deviation of each component (the particle itself left out). Fitted to the k
+  /// particles of one cell at one step, it heats an elastic gas by about 0.1/k of its energy
+  /// per collision (engine.hpp).
+  Gaussian,
+  /// The velocity and spin of one of the other particles of the cell (of the partner's
+  /// species), picked at random, as they were at the step start: the partners are the cell's
+  /// own velocity distribution, so an elastic gas keeps its mean energy (to first order in the
+  /// step) however few particles a cell holds. The partner's radius and mass stay the species'
+  /// mean in the cell, as for Gaussian.
+  CellParticle,
+};
+
 /// The contact value that multiplies nu (excluded volume).
 enum class ContactValue {
   None,    ///< 1: the dilute (Boltzmann) limit.
@@ -33,10 +48,11 @@ struct MonteCarloOptions {
   double time_step = 0.0;
   /// Edge of the collision cells, m (cells per axis: the box edge over this, rounded down, at
   /// least 1). <= 0 (default): 4 largest diameters, or more so that a cell holds 32 particles
-  /// on average (fewer: the cell means random-walk and an elastic gas heats, engine.cpp).
+  /// on average (fewer: Gaussian partners heat an elastic gas more, engine.hpp).
   double cell_size = 0.0;
   CollisionFrequency frequency = CollisionFrequency::MeanRelativeSpeed;
   ContactValue contact_value = ContactValue::None;
+  PartnerModel partner = PartnerModel::Gaussian;
   std::uint64_t seed = 1;  ///< Seed of the collision random numbers.
   /// A step whose mean number of collisions per moving particle exceeds this stops the run
   /// (MethodFailure "monte_carlo_step_too_long"): the partner statistics are frozen over a step.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <sstream>
 
 #include "events/laws/walton.hpp"
@@ -12,9 +13,17 @@
 namespace carom {
 
 namespace {
-/// Flies r, v over s seconds of the flight f (exact: ballistic when f.rate = 0).
-void fly(Vec3& r, Vec3& v, const RelaxFlight& f, double s) {
+/// Flies r, v over s seconds of the flight f (exact: ballistic when f.rate = 0). With `gas`
+/// (relax flights: f holds the gas forces) the work per unit mass that the gas forces did on the
+/// way is added to `work`, J/kg (RelaxFlight::move_booking_gas_work: the exact integral, and
+/// the same r, v bit for bit).
+void fly(Vec3& r, Vec3& v, const RelaxFlight& f, double s, bool gas, const Vec3& gravity,
+         double& work) {
   if (s <= 0.0) return;
+  if (gas) {
+    work += f.move_booking_gas_work(r, v, s, gravity);
+    return;
+  }
   r += f.displacement(v, s);
   v = f.velocity(v, s);
 }
@@ -33,6 +42,7 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
   const ParticleStore& p = system_.particles;
   Vec3 r = start_position_[i], v = start_velocity_[i], w = start_spin_[i];
   const std::uint32_t s = p.species[i];
+  end_gas_work_[i] = 0.0;
   if (system_.species[s].fixed) {
     end_position_[i] = r;
     end_velocity_[i] = v;
@@ -40,9 +50,15 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     return;
   }
   const RelaxFlight f = flight_of(i);
+  // Relax flights carry the gas forces: their work is booked flight by flight (J/kg since the
+  // particle's last logged event, handed to the next event or to end_gas_work_).
+  const bool gas = options_.flight_model == FlightModel::Relax;
+  const Vec3& gravity = system_.flight.gravity;
+  double flown_work = 0.0;
   const double a = p.radius[i], mass = p.mass[i], inertia = p.inertia[i];
   const std::size_t species = system_.species.size();
   const bool mean_velocity = options_.frequency == CollisionFrequency::MeanVelocity;
+  const bool cell_particle = options_.partner == PartnerModel::CellParticle;
 
   // The partners of each species in this particle's cell, and the part of the candidate rate
   // that does not depend on speed: c pi (R1 + R0)^2 n g.
@@ -66,6 +82,24 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
                         contact_value(options_.contact_value, phi, xi2, 2.0 * a, 2.0 * partners[t].mean_radius);
   }
 
+  // A partner of species t: its velocity, and its spin (CellParticle: one of the cell's other
+  // particles of species t at random, as at the step start; Gaussian: the mean spin).
+  Vec3 partner_spin = Vec3::Zero();
+  auto draw_partner = [&](std::size_t t) -> Vec3 {
+    if (!cell_particle) {
+      partner_spin = partners[t].mean_spin;
+      return sample_partner_velocity(partners[t], rng_);
+    }
+    const std::span<const std::uint32_t> list = grid_.members(cell, static_cast<std::uint32_t>(t));
+    const std::size_t others = list.size() - (t == s ? 1 : 0);
+    const std::size_t k =
+        std::min(others - 1, static_cast<std::size_t>(rng_.uniform() * double(others)));
+    std::uint32_t j = list[k];
+    if (j == i) j = list.back();  // i is not last, so the others stay equally likely
+    partner_spin = start_spin_[j];
+    return start_velocity_[j];
+  };
+
   double clock = step_start_;
   int instant_wall_impacts = 0;
   std::size_t events_here = 0;
@@ -82,8 +116,16 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
         candidate_rate[t] = 0.0;
         continue;
       }
-      bound[t] = (v - partners[t].mean_velocity).norm() + drift +
-                 (mean_velocity ? 0.0 : kSpreadBound * partners[t].velocity_std.norm());
+      // CellParticle: |V1 - V0| <= |V1 - <V>| + |V0 - <V>| with <V> the mean of every particle
+      // of the cell, an exact bound.
+      if (mean_velocity)
+        bound[t] = (v - partners[t].mean_velocity).norm() + drift;
+      else if (cell_particle)
+        bound[t] = (v - grid_.mean_velocity(cell, static_cast<std::uint32_t>(t))).norm() + drift +
+                   grid_.largest_deviation(cell, static_cast<std::uint32_t>(t));
+      else
+        bound[t] = (v - partners[t].mean_velocity).norm() + drift +
+                   kSpreadBound * partners[t].velocity_std.norm();
       candidate_rate[t] = rate_per_speed[t] * bound[t];
       total_rate += candidate_rate[t];
     }
@@ -103,12 +145,13 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
 
     if (++events_here > 100000) {
       std::ostringstream out;
-      out << "particle " << p.id[i] << " at " << r.transpose() << " m had 100000 collisions and wall impacts in "
-          << "one step at t = " << clock << " s; reduce [monte_carlo] time_step";
+      out << "particle " << p.id[i] << " at " << r.transpose() << " m had 100000 collision trials and wall impacts ("
+          << (log_.size() - log_begin_[i]) << " impacts and collisions) in one step at t = " << clock
+          << " s; reduce [monte_carlo] time_step";
       throw MethodFailure("monte_carlo_event_stall", out.str());
     }
     if (wall_in <= candidate_in) {
-      fly(r, v, f, wall_in);
+      fly(r, v, f, wall_in, gas, gravity, flown_work);
       clock = std::min(clock + wall_in, step_end_);
       if (wall_in == 0.0 && ++instant_wall_impacts > 1000) {
         std::ostringstream out;
@@ -125,11 +168,13 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
       const CollisionOutcome outcome =
           collide(law, normal, ContactBody{v, w, 1.0 / mass, a, 1.0 / inertia},
                   ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
-      log_.push_back(StepEvent{clock, r, v, w, -1 - wall, outcome.impulse, Vec3::Zero(), outcome.dissipated});
+      log_.push_back(StepEvent{clock, r, v, w, -1 - wall, outcome.impulse, Vec3::Zero(),
+                               outcome.dissipated, mass * flown_work});
+      flown_work = 0.0;
       continue;
     }
 
-    fly(r, v, f, candidate_in);
+    fly(r, v, f, candidate_in, gas, gravity, flown_work);
     clock = std::min(clock + candidate_in, step_end_);
     // Which species this candidate is of, in proportion to the candidate rates.
     double pick = rng_.uniform() * total_rate;
@@ -144,12 +189,12 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     if (mean_velocity) {
       speed = (v - partner.mean_velocity).norm();
     } else {
-      partner_velocity = sample_partner_velocity(partner, rng_);
+      partner_velocity = draw_partner(t);
       speed = (v - partner_velocity).norm();
     }
     if (speed > bound[t]) ++step_bound_exceeded_;
     if (rng_.uniform() * bound[t] >= speed) continue;  // thinned: no collision
-    if (mean_velocity) partner_velocity = sample_partner_velocity(partner, rng_);
+    if (mean_velocity) partner_velocity = draw_partner(t);
     const Vec3 relative = v - partner_velocity;
     if (relative.squaredNorm() == 0.0) continue;
     const Vec3 normal = sample_impact_normal(relative, rng_);
@@ -158,16 +203,18 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     const double partner_radius = partner.mean_radius;
     const double partner_mass = kind.density * 4.0 / 3.0 * std::numbers::pi * std::pow(partner_radius, 3);
     const double partner_inertia = 0.4 * partner_mass * partner_radius * partner_radius;
-    Vec3 partner_spin = partner.mean_spin;
     const double before = kinetic_energy(v, w, mass, inertia);
     const CollisionOutcome outcome =
         collide(system_.materials.pair(s, t), normal, ContactBody{v, w, 1.0 / mass, a, 1.0 / inertia},
                 ContactBody{partner_velocity, partner_spin, kind.fixed ? 0.0 : 1.0 / partner_mass, partner_radius,
                             kind.fixed ? 0.0 : 1.0 / partner_inertia});
     log_.push_back(StepEvent{clock, r, v, w, static_cast<std::int32_t>(t), outcome.impulse,
-                             (a + partner_radius) * normal, before - kinetic_energy(v, w, mass, inertia)});
+                             (a + partner_radius) * normal,
+                             before - kinetic_energy(v, w, mass, inertia), mass * flown_work});
+    flown_work = 0.0;
   }
-  fly(r, v, f, step_end_ - clock);
+  fly(r, v, f, step_end_ - clock, gas, gravity, flown_work);
+  end_gas_work_[i] = mass * flown_work;
   end_position_[i] = r;
   end_velocity_[i] = v;
   end_spin_[i] = w;

@@ -26,9 +26,9 @@
 /// system), so the scheme stays first order in dt_p. The torque kick is stable while
 /// dt_p |T| / (I |Omega_rel|) <= 2 (the secant decay rate of the spin): beyond it a kick
 /// reverses the spin by more than it had, and check_stability refuses it as it refuses the drag.
-/// Gas work: the kick scheme books none (Energies::gas_work stays 0 for kick flights), neither
-/// the drag's nor the lift's or torque's; the lift is perpendicular to u - v, so in gas at rest
-/// it does no work, and the torque only removes rotational energy.
+/// Gas work: the scheme itself books none; the methods that call it (event-driven and Monte
+/// Carlo kick flights) book the kinetic and spin energy each kick changes as gas work
+/// (Energies::gas_work), so the drag's, the lift's and the torque's work are all in the books.
 #include <stdexcept>
 #include <vector>
 

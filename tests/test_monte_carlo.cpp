@@ -13,6 +13,7 @@
 #include "events/monte_carlo/engine.hpp"
 #include "scenarios/scene/granular_gas.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "monte_carlo_support.hpp"
 #include "test_support.hpp"
 
 namespace carom {
@@ -223,26 +224,6 @@ TEST(MonteCarloLargeParticle, CollisionFrequencyInACloudAtRest) {
     EXPECT_NEAR(mc.velocity(0).norm(), 1.0, 1e-9) << "elastic smooth impacts on fixed partners keep |V1|";
     EXPECT_EQ(mc.statistics().pair(0, 1), mc.travelling_collisions()[1] / 2);
   }
-}
-
-/// A closed box (walls on every axis) under gravity with two species, rough inelastic laws.
-System walled_box(std::uint64_t seed) {
-  System system;
-  system.domain.upper = Vec3(0.02, 0.02, 0.04);
-  system.flight.gravity = Vec3(0, 0, -9.81);
-  system.species.push_back(Species{"large", 2e-3, 2500});
-  system.species.push_back(Species{"small", 1e-3, 2500});
-  system.walls = box_walls(system.domain);
-  ContactLaw law{0.8, 0.3, 0.2, -1.0};
-  system.materials = MaterialTable(2, system.walls.size(), law, law);
-  Rng rng(seed);
-  for (int i = 0; i < 400; ++i) {
-    const std::uint32_t s = i % 4 == 0 ? 0 : 1;
-    const double a = system.species[s].radius();
-    const Vec3 r(rng.uniform(a, 0.02 - a), rng.uniform(a, 0.02 - a), rng.uniform(a, 0.04 - a));
-    system.add_particle(s, r, 0.3 * rng.normal3(), 50.0 * rng.normal3());
-  }
-  return system;
 }
 
 // No particle ever leaves a walled box: 400 particles under gravity with rough inelastic walls,

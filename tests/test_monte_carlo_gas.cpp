@@ -10,31 +10,11 @@
 
 #include "core/hdf5.hpp"
 #include "events/monte_carlo/engine.hpp"
+#include "monte_carlo_support.hpp"
 #include "test_support.hpp"
 
 namespace carom {
 namespace {
-
-/// 400 spheres of two sizes in a walled box under gravity, rough inelastic walls and pairs
-/// (as tests/test_monte_carlo.cpp's walled box), flying relax flights.
-System gas_box(std::uint64_t seed) {
-  System system;
-  system.domain.upper = Vec3(0.02, 0.02, 0.04);
-  system.flight.gravity = Vec3(0, 0, -9.81);
-  system.species.push_back(Species{"large", 2e-3, 2500});
-  system.species.push_back(Species{"small", 1e-3, 2500});
-  system.walls = box_walls(system.domain);
-  ContactLaw law{0.8, 0.3, 0.2, -1.0};
-  system.materials = MaterialTable(2, system.walls.size(), law, law);
-  Rng rng(seed);
-  for (int i = 0; i < 400; ++i) {
-    const std::uint32_t s = i % 4 == 0 ? 0 : 1;
-    const double a = system.species[s].radius();
-    const Vec3 r(rng.uniform(a, 0.02 - a), rng.uniform(a, 0.02 - a), rng.uniform(a, 0.04 - a));
-    system.add_particle(s, r, 0.3 * rng.normal3(), 50.0 * rng.normal3());
-  }
-  return system;
-}
 
 /// A stand-in for the gas coupling: every 1.3 ms (not a multiple of the 1 ms step) it sets each
 /// particle's relax flight towards a gas velocity that changes with time and height (rate
@@ -75,7 +55,7 @@ MonteCarloOptions relax_options(PartnerModel partner = PartnerModel::Gaussian) {
 // fails by orders of magnitude. Both partner models.
 TEST(MonteCarloGasWork, EnergyBooksCloseWithRelaxFlightsAndKicks) {
   for (const PartnerModel partner : {PartnerModel::Gaussian, PartnerModel::CellParticle}) {
-    MonteCarloEngine mc(gas_box(5), relax_options(partner));
+    MonteCarloEngine mc(walled_box(5), relax_options(partner));
     attach_fake_gas(mc);
     const double start_total = mc.energies().total();
     double worst = 0.0;
@@ -104,11 +84,11 @@ TEST(MonteCarloGasWork, ResumesBitForBitAndOldCheckpointsLoad) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "carom_mc_gas_resume";
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "state.h5").string();
-  MonteCarloEngine straight(gas_box(6), relax_options());
+  MonteCarloEngine straight(walled_box(6), relax_options());
   attach_fake_gas(straight);
   straight.run_until(0.03);
   for (double save_at : {0.01237, 0.0026}) {
-    MonteCarloEngine first(gas_box(6), relax_options());
+    MonteCarloEngine first(walled_box(6), relax_options());
     attach_fake_gas(first);
     first.run_until(save_at);
     {
@@ -117,7 +97,7 @@ TEST(MonteCarloGasWork, ResumesBitForBitAndOldCheckpointsLoad) {
     }
     {
       const h5::File file = h5::File::open(path, false);
-      MonteCarloEngine resumed(gas_box(6), relax_options(),
+      MonteCarloEngine resumed(walled_box(6), relax_options(),
                                read_monte_carlo_state(file.open_group("method")));
       attach_fake_gas(resumed);
       EXPECT_EQ(resumed.energies().gas_work, first.energies().gas_work) << "saved at " << save_at;
@@ -142,7 +122,7 @@ TEST(MonteCarloGasWork, ResumesBitForBitAndOldCheckpointsLoad) {
   const h5::File file = h5::File::open(path, false);
   const MonteCarloState old = read_monte_carlo_state(file.open_group("method"));
   EXPECT_EQ(old.gas_work, 0.0);
-  MonteCarloEngine resumed(gas_box(6), relax_options(), old);
+  MonteCarloEngine resumed(walled_box(6), relax_options(), old);
   attach_fake_gas(resumed);
   resumed.run_until(0.03);
   for (std::size_t i = 0; i < straight.particle_count(); ++i)

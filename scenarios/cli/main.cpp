@@ -1,10 +1,13 @@
 // carom: the command line of the event-driven hard-sphere simulator.
 //
-//   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--method auto|KIND] [--quiet]
-//   [--overwrite] carom resume DIR [--end T] [--quiet] carom check SCENE [--set key=value ...]
-//   [--seed N] carom info FILE.h5 [--tree] carom sweep SWEEP.toml [--jobs J] [--out DIR]
-//   [--retry-failed] [--dry-run] [--quiet] carom chart CHART.toml [--jobs J] [--out DIR]
-//   [--retry-failed] [--dry-run] [--quiet]
+// clang-format off
+//   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--method auto|KIND] [--quiet] [--overwrite]
+//   carom resume DIR [--end T] [--quiet]
+//   carom check SCENE [--set key=value ...] [--seed N]
+//   carom info FILE.h5 [--tree]
+//   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
+//   carom chart CHART.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
+// clang-format on
 //
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
 // is written), 130 interrupted by SIGINT/SIGTERM (a checkpoint is written). See run.hpp.
@@ -153,8 +156,8 @@ int main(int argc, char** argv) {
           throw SceneError(scene.file + ": " + e.what());
         }
         std::cout << describe_scene(scene);
-        std::cout << describe_recommendation(scene_numbers(scene),
-                                             recommend(scene, scene_numbers(scene)));
+        const SceneNumbers numbers = scene_numbers(scene);
+        std::cout << describe_recommendation(numbers, recommend(scene, numbers));
         return kExitOk;
       }
       RunOptions options;

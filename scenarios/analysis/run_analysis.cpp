@@ -14,16 +14,6 @@ namespace carom {
 
 namespace {
 
-/// The axis gravity points against (z when there is no gravity).
-int vertical_axis(const System& system) {
-  const Vec3& g = system.flight.gravity;
-  if (g.squaredNorm() == 0.0) return 2;
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(g[k]) > std::abs(g[axis])) axis = k;
-  return axis;
-}
-
 /// Field cells of about four largest diameters across (at least one per axis).
 std::array<int, 3> default_field_cells(const System& system) {
   double largest = 0.0;
@@ -90,7 +80,7 @@ RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim) : scene
   tagged_partners_ = sim.statistics().tagged.partners();
   const ParticleStore& p = system.particles;
   const std::size_t n = sim.particle_count();
-  vertical_ = vertical_axis(system);
+  vertical_ = system.flight.vertical_axis();
   floor_ = system.domain.lower[vertical_];
   const AnalysisSettings& a = scene.analysis;
   const Region& region = scene.regions[a.mixing_region];

@@ -20,15 +20,6 @@ std::string num(double x) {
   return out.str();
 }
 
-/// The axis gravity points along (z without gravity).
-int vertical_axis(const Vec3& g) {
-  if (g.squaredNorm() == 0.0) return 2;
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(g[k]) > std::abs(g[axis])) axis = k;
-  return axis;
-}
-
 /// Carnahan-Starling contact value, the packing capped at 0.6 (a frozen packing has no mean free
 /// time to speak of; the cap keeps the estimate finite).
 double contact_value(double phi) {
@@ -53,7 +44,7 @@ SceneNumbers scene_numbers(const Scene& scene) {
   const std::size_t S = system.species.size();
   const Vec3& gravity = system.flight.gravity;
   const double g = gravity.norm();
-  const int up = vertical_axis(gravity);
+  const int up = system.flight.vertical_axis();
   SceneNumbers n;
 
   // Masses, solid fraction, the largest and the Sauter-mean diameter.

@@ -24,11 +24,7 @@ std::array<int, 3> read_cells(TableReader& t, std::string_view key,
 void read_profiles(TableReader& t, Scene& scene) {
   ProfileSettings& p = scene.analysis.profiles;
   const Domain& domain = scene.system.domain;
-  const Vec3& g = scene.system.flight.gravity;
-  int vertical = 2;
-  if (g.squaredNorm() > 0.0)
-    for (int k = 0; k < 3; ++k)
-      if (std::abs(g[k]) > std::abs(g[vertical])) vertical = k;
+  const int vertical = scene.system.flight.vertical_axis();
   const std::string up(1, "xyz"[vertical]);
   if (!t.has("heights")) t.fail("heights", "is missing (section centres along " + up + ", m)");
   p.heights =

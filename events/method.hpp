@@ -29,10 +29,13 @@ struct Energies {
   /// Work done on the particles by the gas forces (drag, pressure gradient) since the start;
   /// 0 where a method does not book it.
   double gas_work = 0;
-  /// translational + rotational + potential + elastic + dissipated - gas_work: constant in an
-  /// exact run.
+  /// Energy (kinetic + potential) that entering particles brought in minus what leaving ones
+  /// took out, since the start (inflow, outflow), J.
+  double flow = 0;
+  /// translational + rotational + potential + elastic + dissipated - gas_work - flow: constant
+  /// in an exact run.
   double total() const {
-    return translational + rotational + potential + elastic + dissipated - gas_work;
+    return translational + rotational + potential + elastic + dissipated - gas_work - flow;
   }
 };
 
@@ -56,8 +59,18 @@ class MethodFailure : public std::runtime_error {
   std::string status;  ///< snake_case, e.g. "soft_sphere_unstable".
 };
 
-/// What a synchronising action (the fluid step, a drag kick) sees and may change: every
-/// particle's state as of `time`.
+/// Particles that leave and enter at a synchronising action: the removal and insertion events of
+/// outflows and inflows (DESIGN.md section 3; events/flow/). The method removes and adds them
+/// after the action: the remaining particles keep their order, the new ones are appended in the
+/// order given, with a flight of gravity alone until the next fluid step.
+struct ParticleChange {
+  std::vector<std::size_t> removed;  ///< Indices (the method's order) of particles that leave, ascending.
+  ParticleStore added;               ///< Particles that enter, their states as of the step's time.
+  bool empty() const { return removed.empty() && added.size() == 0; }
+};
+
+/// What a synchronising action (the fluid step, a drag kick, the flow step) sees and may change:
+/// every particle's state as of `time`.
 struct GlobalStep {
   double time;                        ///< s.
   ParticleStore& particles;           ///< States as of `time`; velocities may be changed.
@@ -65,6 +78,8 @@ struct GlobalStep {
   /// for one fluid step (RelaxFlight: rate K/m, drive). Event-driven relax flights fly them
   /// exactly; a time-stepped method applies them as forces at each of its steps.
   std::vector<RelaxFlight>& flights;
+  /// Particles to remove and add (the flow step); the action must not resize `particles` itself.
+  ParticleChange change{};
 };
 
 /// The interface a collision method offers the rest of carom. Particle indices are the

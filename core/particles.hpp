@@ -49,6 +49,52 @@ struct ParticleStore {
     species.pop_back(); id.pop_back();
   }
 
+  /// Removes the particles at `indices` (ascending, each once); the others keep their order.
+  void erase(const std::vector<std::size_t>& indices) {
+    auto apply = [&](auto& column) { erase_indices(column, indices); };
+    apply(position);
+    apply(velocity);
+    apply(clock);
+    apply(radius);
+    apply(spin);
+    apply(mass);
+    apply(inertia);
+    apply(species);
+    apply(id);
+  }
+
+  /// Appends every particle of `other`, in its order.
+  void append(const ParticleStore& other) {
+    auto apply = [](auto& column, const auto& more) {
+      column.insert(column.end(), more.begin(), more.end());
+    };
+    apply(position, other.position);
+    apply(velocity, other.velocity);
+    apply(clock, other.clock);
+    apply(radius, other.radius);
+    apply(spin, other.spin);
+    apply(mass, other.mass);
+    apply(inertia, other.inertia);
+    apply(species, other.species);
+    apply(id, other.id);
+  }
+
+  /// Removes the entries at `indices` (ascending, each once) from `column`, keeping the order of
+  /// the others: the per-particle arrays of a method follow its particles with this.
+  template <class Column>
+  static void erase_indices(Column& column, const std::vector<std::size_t>& indices) {
+    std::size_t next = 0, kept = 0;
+    for (std::size_t i = 0; i < column.size(); ++i) {
+      if (next < indices.size() && indices[next] == i) {
+        ++next;
+        continue;
+      }
+      if (kept != i) column[kept] = std::move(column[i]);
+      ++kept;
+    }
+    column.resize(kept);
+  }
+
   /// Reorders every array so that new particle k is old particle order[k].
   void permute(const std::vector<std::size_t>& order) {
     auto apply = [&](auto& column) {

@@ -19,6 +19,11 @@ struct System {
   MaterialTable materials;       ///< Contact laws per species pair and species-wall pair.
   BallisticFlight flight;        ///< Gravity and the trajectory between events.
   ParticleStore particles;       ///< The particles.
+  /// Species that enter through inflows during the run (none of them may be present at the
+  /// start): the methods size their steps and grids for them as for particles present.
+  std::vector<std::uint32_t> entering_species;
+  /// Largest speed at which particles enter through inflows, m/s.
+  double entering_speed = 0;
 
   /// Adds one particle of species s with velocity v and spin w at position r (time 0).
   void add_particle(std::uint32_t s, const Vec3& r, const Vec3& v, const Vec3& w = Vec3::Zero()) {

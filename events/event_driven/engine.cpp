@@ -135,6 +135,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
   last_particle_event_ = state.last_particle_event;
   statistics_ = std::move(state.statistics);
   gas_work_ = state.gas_work;
+  flow_energy_ = state.flow_energy;
   stall_.limit = options_.collapse.stall_collisions;
   stall_.window = state.stall_window;
   start_rate_monitor(state.rate_start_time);
@@ -199,6 +200,7 @@ EngineState EventDrivenEngine::state() const {
   s.statistics = statistics_;
   s.stall_window = stall_.window;
   s.gas_work = gas_work_;
+  s.flow_energy = flow_energy_;
   s.rate_start_pairs = rate_.start_pairs;
   s.rate_start_walls = rate_.start_walls;
   s.rate_start_time = rate_.start_time;
@@ -268,8 +270,7 @@ void EventDrivenEngine::fire_action(std::size_t k) {
     return;
   }
   ParticleStore& p = system_.particles;
-  const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i) advance<Flight>(static_cast<std::int32_t>(i), time_);
+  for (std::size_t i = 0; i < p.size(); ++i) advance<Flight>(static_cast<std::int32_t>(i), time_);
   last_particle_event_ = time_;
   store_state();
   // A synchronising action is the gas's hook (the fluid step, a drag kick): the kinetic energy
@@ -277,9 +278,12 @@ void EventDrivenEngine::fire_action(std::size_t k) {
   const double kinetic_before = kinetic_energy(p);
   GlobalStep step{time_, p, flights_};
   action.step(step);
-  if (flights_.size() != n) throw std::logic_error(action.name + " changed the number of flights");
+  if (flights_.size() != p.size() || hot_.size() != p.size())
+    throw std::logic_error(action.name + " changed the number of particles or flights");
   hold_fixed_particles();
   gas_work_ += kinetic_energy(p) - kinetic_before;
+  if (!step.change.empty()) apply_change(step.change);
+  const std::size_t n = p.size();
   action.next_time += action.interval;
   calendar_.set(end_slot_ + 1 + k, action.next_time);
   horizon_ = next_synchronisation();
@@ -371,6 +375,7 @@ Energies EventDrivenEngine::energies() const {
   }
   e.dissipated = statistics_.dissipated_energy;
   e.gas_work = gas_work_;
+  e.flow = flow_energy_;
   // The gas's work on each relax flight from the particle's clock to now, not yet booked.
   with_flight([&](auto flight) {
     using Flight = decltype(flight);

@@ -10,6 +10,7 @@
 ///   collisions.cpp             pair and wall collisions, cell crossings, invariant checks
 ///   stall_detector.*           the collapse detector
 ///   engine_state*              the saved state and its HDF5 form
+///   flow_change.cpp            particles leaving and entering (inflow, outflow)
 ///   calendar.hpp, event.hpp, pair_batch.*  the event calendar, the event record, batched tests
 /// The collision laws are in events/laws/, shared with the other methods.
 #include <csignal>
@@ -158,6 +159,10 @@ class EventDrivenEngine final : public CollisionMethod {
   }
   /// Predicts all of particle i's events for the flights of this run.
   void predict_any(std::int32_t i);
+  /// Removes and adds particles (a flow step; every particle is synchronised at time_ and the
+  /// store is up to date): the store, the records, the grid and the calendar are rebuilt for
+  /// the new particles (flow_change.cpp); the caller then predicts every particle's events.
+  void apply_change(const ParticleChange& change);
 
   // --- The prediction interface: one implementation per flight --------------------------------
   /// Predicts particle i's next collision, and its next cell crossing when its trajectory is
@@ -285,6 +290,8 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Work done on the particles by the gas since the start, J: by the gas forces of relax
   /// flights up to each particle's clock, and by the synchronising actions (drag kicks).
   double gas_work_ = 0;
+  /// Energy that entering particles brought minus what leaving ones took out, J.
+  double flow_energy_ = 0;
   double horizon_ = kNever;                    ///< Relax: no prediction reaches past this, s.
   bool restored_ = false;                      ///< Built from an EngineState (its events stand).
   std::vector<std::pair<std::string, double>> restored_action_times_;

@@ -36,6 +36,7 @@ struct EngineState {
   std::vector<std::uint32_t> stall_count;
   double stall_window = 0;                          ///< s.
   double gas_work = 0;                              ///< Gas work booked so far, J.
+  double flow_energy = 0;  ///< Energy brought in by flow minus taken out, J.
   std::uint64_t rate_start_pairs = 0;               ///< Lasting-contact window: pair count,
   std::uint64_t rate_start_walls = 0;               ///< wall count,
   double rate_start_time = -1;                      ///< and start, s (< 0: not saved).
@@ -44,7 +45,7 @@ struct EngineState {
 
 /// Writes `state` into `group`. Layout (doubles as native doubles: bit for bit): attributes
 /// method = "event_driven", time, last_particle_event, stall_window, gas_work,
-/// rate_start_pairs, rate_start_walls, rate_start_time; particles/ (position,
+/// flow_energy, rate_start_pairs, rate_start_walls, rate_start_time; particles/ (position,
 /// velocity, spin (N x 3), clock, radius, mass, inertia, species, id, and the engine's
 /// event_counter and last_collision), cells (N x 3), cell_list_places, events/ and crossings/
 /// (each: time, partner, partner_counter, kind), flights/ (rate, drive (N x 3)), statistics/

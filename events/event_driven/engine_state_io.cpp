@@ -56,6 +56,7 @@ void write_engine_state(const h5::Group& group, const EngineState& s) {
   group.set_attribute("last_particle_event", s.last_particle_event);
   group.set_attribute("stall_window", s.stall_window);
   group.set_attribute("gas_work", s.gas_work);
+  group.set_attribute("flow_energy", s.flow_energy);
   group.set_attribute("rate_start_pairs", s.rate_start_pairs);
   group.set_attribute("rate_start_walls", s.rate_start_walls);
   group.set_attribute("rate_start_time", s.rate_start_time);
@@ -117,6 +118,7 @@ EngineState read_engine_state(const h5::Group& group) {
   s.stall_window = group.attribute<double>("stall_window");
   // Checkpoints written before the gas work was booked: it starts from 0 there.
   if (group.has_attribute("gas_work")) s.gas_work = group.attribute<double>("gas_work");
+  if (group.has_attribute("flow_energy")) s.flow_energy = group.attribute<double>("flow_energy");
   if (group.has_attribute("rate_start_time")) {  // later than the lasting-contact monitor
     s.rate_start_pairs = group.attribute<std::uint64_t>("rate_start_pairs");
     s.rate_start_walls = group.attribute<std::uint64_t>("rate_start_walls");

@@ -62,6 +62,7 @@ void MonteCarloEngine::fire_due_actions() {
         if (flights_.size() != p.size()) throw std::logic_error(a.name + " changed the number of flights");
         hold_fixed_particles();
         gas_work_ += particles_kinetic_energy() - kinetic_before;
+        if (!step.change.empty()) apply_change(step.change);
       } else {
         a.action();
       }
@@ -257,6 +258,7 @@ Energies MonteCarloEngine::energies() const {
   }
   e.dissipated = statistics_.dissipated_energy;
   e.gas_work = gas_work_;
+  e.flow = flow_energy_;
   // The gas's work on each relax flight from the particle's shown state to now, not yet booked
   // (the same flight, bit for bit, as position() and velocity()).
   if (options_.flight_model == FlightModel::Relax)
@@ -303,6 +305,7 @@ MonteCarloState MonteCarloEngine::state() const {
   s.max_collisions_per_step = max_collisions_per_step_;
   s.bound_exceeded = bound_exceeded_;
   s.gas_work = computed_ ? start_gas_work_ : gas_work_;
+  s.flow_energy = flow_energy_;
   if (computed_) {
     s.particles.position = start_position_;
     s.particles.velocity = start_velocity_;

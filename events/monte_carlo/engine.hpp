@@ -37,7 +37,8 @@
 /// Pieces, one file each: options.hpp, collision_grid.* (cell statistics), partner_sampling.*
 /// (partner velocity, impact geometry, contact value), particle_step.cpp (one particle's
 /// step), engine_setup.cpp (construction, validation, default step and cells), engine.cpp
-/// (steps, actions, views, counters), engine_state_io.cpp (checkpoints).
+/// (steps, actions, views, counters), engine_state_io.cpp (checkpoints), flow_change.cpp
+/// (particles leaving and entering).
 #include <csignal>
 #include <cstdint>
 #include <functional>
@@ -73,6 +74,7 @@ struct MonteCarloState {
   double max_collisions_per_step = 0;      ///< Largest mean collisions per particle in a step so far.
   std::uint64_t bound_exceeded = 0;        ///< Thinning trials whose speed exceeded the bound.
   double gas_work = 0;  ///< Work of the gas forces on the particles by step_start, J.
+  double flow_energy = 0;  ///< Energy brought in by entering particles minus taken out, J.
   std::vector<std::pair<std::string, double>> action_times;  ///< Next time of each action, s.
 };
 
@@ -141,6 +143,8 @@ class MonteCarloEngine final : public CollisionMethod {
   void resolve_elastic_speed();
   /// Fires every action due at the current time (no step under way).
   void fire_due_actions();
+  /// Removes and adds particles (a flow step, no step under way; flow_change.cpp).
+  void apply_change(const ParticleChange& change);
   /// Computes the step from time_ to step_end_ (everything synchronised at time_).
   void compute_step();
   /// One particle's step (particle_step.cpp): reads start_*, writes end_* and the log.
@@ -196,6 +200,9 @@ class MonteCarloEngine final : public CollisionMethod {
   /// energy that synchronising actions (the gas's kicks and fluid steps) gave.
   double gas_work_ = 0;
   double start_gas_work_ = 0;      ///< At step_start_, J.
+  /// Energy that entering particles brought minus what leaving ones took out, J (changes only
+  /// between steps).
+  double flow_energy_ = 0;
   RunStatistics statistics_;       ///< As shown at time_.
   RunStatistics start_statistics_;  ///< At step_start_.
   TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }

@@ -53,6 +53,7 @@ MonteCarloEngine::MonteCarloEngine(System system, MonteCarloOptions options, Mon
   max_collisions_per_step_ = state.max_collisions_per_step;
   bound_exceeded_ = state.bound_exceeded;
   gas_work_ = state.gas_work;
+  flow_energy_ = state.flow_energy;
   restored_action_times_ = std::move(state.action_times);
   grid_ = CollisionGrid(system_.domain, cell_size_, species);
   resolve_elastic_speed();
@@ -113,9 +114,16 @@ void MonteCarloEngine::resolve_time_step_and_cells() {
   const double volume = system_.domain.volume();
   double largest_diameter = 0.0;
   for (double a : p.radius) largest_diameter = std::max(largest_diameter, 2.0 * a);
+  for (std::uint32_t s : system_.entering_species)
+    largest_diameter = std::max(largest_diameter, system_.species.at(s).diameter);
   for (std::uint32_t s : p.species) moving_count_ += system_.species[s].fixed ? 0 : 1;
 
   cell_size_ = options_.cell_size;
+  if (!(cell_size_ > 0.0) && n == 0 && !system_.entering_species.empty())
+    throw std::invalid_argument(
+        "[monte_carlo] cell_size: the default collision cell holds 32 of the particles present at "
+        "the start, and this scene starts with none (they enter through inflows): give cell_size "
+        "(m), a few times the mean distance between particles where the flow is");
   if (!(cell_size_ > 0.0)) {
     // 4 largest diameters, or more so that a cell holds 32 particles on average: with k
     // particles a cell, Gaussian partners (fitted to those k) heat an elastic gas by about
@@ -137,7 +145,8 @@ void MonteCarloEngine::resolve_time_step_and_cells() {
   for (std::size_t i = 0; i < n; ++i)
     if (!system_.species[p.species[i]].fixed) square_sum += p.velocity[i].squaredNorm();
   const double rms = moving_count_ > 0 ? std::sqrt(square_sum / double(moving_count_)) : 0.0;
-  const double speed = std::max(rms, std::sqrt(system_.flight.gravity.norm() * largest_diameter));
+  const double speed = std::max(
+      {rms, system_.entering_speed, std::sqrt(system_.flight.gravity.norm() * largest_diameter)});
   if (!(speed > 0.0))
     throw std::invalid_argument(
         "[monte_carlo] time_step: every particle is at rest and there is no gravity, so no default "

@@ -15,7 +15,7 @@ using h5::unflatten;
 
 // Layout (doubles as native doubles: bit for bit): attributes method = "monte_carlo", time,
 // step_start, step_end, time_step, cell_size, max_collisions_per_step, bound_exceeded,
-// gas_work (J, at step_start);
+// gas_work (J, at step_start), flow_energy (J);
 // rng (the generator's text state); particles/ (position, velocity, spin (N x 3), clock,
 // radius, mass, inertia, species, id) as of step_start; flights/ (rate, drive (N x 3));
 // statistics/ as the event-driven engine writes it, plus travelling_collisions (S x S);
@@ -30,6 +30,7 @@ void write_monte_carlo_state(const h5::Group& group, const MonteCarloState& s) {
   group.set_attribute("max_collisions_per_step", s.max_collisions_per_step);
   group.set_attribute("bound_exceeded", s.bound_exceeded);
   group.set_attribute("gas_work", s.gas_work);
+  group.set_attribute("flow_energy", s.flow_energy);
   group.write_string("rng", s.rng);
 
   const std::size_t n = s.particles.size();
@@ -96,6 +97,7 @@ MonteCarloState read_monte_carlo_state(const h5::Group& group) {
   s.bound_exceeded = group.attribute<std::uint64_t>("bound_exceeded");
   // Checkpoints written before the gas work was booked: it starts from 0 there.
   if (group.has_attribute("gas_work")) s.gas_work = group.attribute<double>("gas_work");
+  if (group.has_attribute("flow_energy")) s.flow_energy = group.attribute<double>("flow_energy");
   s.rng = group.read_string("rng");
 
   ParticleStore& p = s.particles;

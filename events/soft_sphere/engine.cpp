@@ -52,6 +52,8 @@ void SoftSphereEngine::setup() {
     ++present[p.species[i]];
     fastest = std::max(fastest, p.velocity[i].norm());
   }
+  for (std::uint32_t s : system_.entering_species) present.at(s) += 2;  // as if present, pairs too
+  fastest = std::max(fastest, system_.entering_speed);
   const Vec3 g = system_.flight.gravity;
   double fall = 0.0;
   if (g.norm() > 0.0) {
@@ -214,8 +216,10 @@ void SoftSphereEngine::fire_due_actions(double t) {
       if (a.step) {
         GlobalStep global{time_, p, flights_};
         a.step(global);
-        gas_forces_ = true;
-        if (flights_.size() != p.size()) throw std::logic_error(a.name + " changed the number of flights");
+        if (flights_.size() != p.size() || force_.size() != p.size())
+          throw std::logic_error(a.name + " changed the number of particles or flights");
+        if (!global.change.empty()) apply_change(global.change);
+        gas_forces_ = true;  // (a flow step's flights are gravity alone: the same forces)
         hold_fixed_particles();
         for (std::size_t i = 0; i < p.size(); ++i)
           if (flights_[i].rate * time_step_ > 0.5)
@@ -347,6 +351,7 @@ Energies SoftSphereEngine::energies() const {
   e.elastic = elastic_;
   e.dissipated = statistics_.dissipated_energy;
   e.gas_work = gas_work_;
+  e.flow = flow_energy_;
   return e;
 }
 

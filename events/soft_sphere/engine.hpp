@@ -5,7 +5,8 @@
 /// CollisionMethod, on the same scenes, outputs and gas coupling as the event-driven method.
 ///
 /// Files: engine.cpp (construction, the step loop, actions, energies), contact_forces.cpp (the
-/// force of every listed contact, the counters it books), engine_state_io.cpp (checkpoints).
+/// force of every listed contact, the counters it books), engine_state_io.cpp (checkpoints),
+/// flow_change.cpp (particles leaving and entering).
 ///
 /// The step (velocity Verlet, as in LIGGGHTS and LAMMPS' nve/sphere):
 ///   v += dt/2 (F_c / m + a(v));  w += dt/2 T / I       (F_c, T: contact force and torque)
@@ -106,6 +107,10 @@ class SoftSphereEngine final : public CollisionMethod {
   /// Books the work of the lossy contact forces of this step with the end-of-step velocities.
   void book_dissipation(double dt);
   void fire_due_actions(double t);
+  /// Removes and adds particles (a flow step, all at time_): per-particle arrays follow, the
+  /// contact histories of the remaining pairs are kept, forces are evaluated again
+  /// (flow_change.cpp).
+  void apply_change(const ParticleChange& change);
   void check_energy();       // the energy-growth detector; throws MethodFailure
   void hold_fixed_particles();
   [[noreturn]] void fail_overlap(std::int32_t i, std::int32_t j, double overlap, double radius) const;
@@ -136,6 +141,7 @@ class SoftSphereEngine final : public CollisionMethod {
   std::uint64_t steps_ = 0;
   double elastic_ = 0;      // stored in the springs at the last force evaluation, J
   double gas_work_ = 0;     // J
+  double flow_energy_ = 0;  // brought in by entering particles minus taken out by leaving ones, J
   bool gas_forces_ = false; // a synchronising action has set flights (else gravity alone)
   double travelled_ = 0;    // bound on any particle's displacement since the list was built, m
   double energy_start_ = 0;   // energies().total() at the start, J

@@ -20,6 +20,7 @@ void SoftSphereEngine::save_state(const h5::Group& group) const {
   group.set_attribute("impact_speed", impact_speed_);
   group.set_attribute("elastic", elastic_);
   group.set_attribute("gas_work", gas_work_);
+  group.set_attribute("flow_energy", flow_energy_);
   group.set_attribute("gas_forces", static_cast<std::uint8_t>(gas_forces_ ? 1 : 0));
   group.set_attribute("travelled", travelled_);
   group.set_attribute("energy_start", energy_start_);
@@ -121,6 +122,7 @@ SoftSphereEngine::SoftSphereEngine(System system, SoftSphereOptions options, con
   steps_ = saved.attribute<std::uint64_t>("steps");
   elastic_ = saved.attribute<double>("elastic");
   gas_work_ = saved.attribute<double>("gas_work");
+  if (saved.has_attribute("flow_energy")) flow_energy_ = saved.attribute<double>("flow_energy");
   gas_forces_ = saved.attribute<std::uint8_t>("gas_forces") != 0;
   travelled_ = saved.attribute<double>("travelled");
   energy_start_ = saved.attribute<double>("energy_start");

@@ -151,9 +151,13 @@ std::vector<PlugConclusions> conclude_plugs(const PlugGeometry& g, const std::ve
       if (s >= rows) break;
       const double interval = s > 0 ? times[s] - times[s - 1] : 0.0;
       if (times[s] - (times[r] + 1.0) > 0.5 * interval + 1e-9) continue;
-      for (std::size_t i = 0; i < particles; ++i)
-        travel += std::abs(heights[s * particles + i] - heights[r * particles + i]);
-      pairs += particles;
+      for (std::size_t i = 0; i < particles; ++i) {
+        // A particle that left (an outflow) has no height (NaN) from then on.
+        const double moved = std::abs(heights[s * particles + i] - heights[r * particles + i]);
+        if (!std::isfinite(moved)) continue;
+        travel += moved;
+        ++pairs;
+      }
     }
     c.travel = pairs > 0 ? travel / static_cast<double>(pairs) : NAN;
     out.push_back(c);

@@ -1,6 +1,7 @@
 #include "scenarios/analysis/run_analysis.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -26,9 +27,12 @@ std::array<int, 3> default_field_cells(const System& system) {
   return cells;
 }
 
-/// Row of particle `id` in the by-id arrays (ids sorted ascending).
+/// Row of particle `id` in the by-id arrays (ids sorted ascending): the particles of t = 0;
+/// kNotAtStart for one that entered later (an inflow).
+constexpr std::size_t kNotAtStart = std::numeric_limits<std::size_t>::max();
 std::size_t rank_of(const std::vector<std::uint64_t>& ids, std::uint64_t id) {
-  return static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+  const auto it = std::lower_bound(ids.begin(), ids.end(), id);
+  return it != ids.end() && *it == id ? static_cast<std::size_t>(it - ids.begin()) : kNotAtStart;
 }
 
 /// Trapezoidal time average of column k of a series with `width` values per row.
@@ -154,10 +158,11 @@ RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim, const s
   if (!file.contains("analysis"))
     throw std::runtime_error(run_file + ": no /analysis group (written by an older carom?)");
   const h5::Group group = file.open_group("analysis");
-  const std::size_t n = ids_.size();
-  const auto ids = group.read<std::uint64_t>("id", {n});
-  if (!std::equal(ids.begin(), ids.end(), ids_.begin()))
-    throw std::runtime_error(run_file + ": /analysis/id does not match the checkpoint's particles");
+  // The particles of t = 0 (with inflow and outflow, not those of the checkpoint).
+  const std::size_t n = group.open_dataset("id").size();
+  ids_ = group.read<std::uint64_t>("id", {n});
+  if (!std::is_sorted(ids_.begin(), ids_.end()))
+    throw std::runtime_error(run_file + ": /analysis/id is not in ascending order: the file is damaged");
   const auto tags = group.read<std::int8_t>("tagged", {n});
   tagged_.assign(tags.begin(), tags.end());
   start_height_ = group.read<double>("start_height", {n});
@@ -255,6 +260,7 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
     for (std::size_t i = 0; i < n; ++i) {
       if (static_cast<std::int32_t>(species[i]) != mixing) continue;
       const std::size_t r = rank_of(ids_, p.id[i]);
+      if (r == kNotAtStart) continue;  // entered later: no start height, no tag
       now.push_back(position[i]);
       tags.push_back(tagged_[r]);
       Vec3 origin = position[i];
@@ -308,15 +314,17 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
                    profile_sums(profiles_, position, velocity, spin, radius)});
   }
   if (plugs_.bins > 0) {
-    std::vector<double> height(n), by_id(n);
+    // Heights of the particles of t = 0 by id (NaN for one that left).
+    std::vector<double> height(n), by_id(ids_.size(), NAN);
     for (std::size_t i = 0; i < n; ++i) {
       height[i] = position[i][vertical_];
-      by_id[rank_of(ids_, p.id[i])] = height[i];
+      const std::size_t r = rank_of(ids_, p.id[i]);
+      if (r != kNotAtStart) by_id[r] = height[i];
     }
     row.push_back({"axial_solid_fraction", static_cast<std::size_t>(plugs_.bins),
                    axial_solid_fraction(height, radius, plugs_.bottom, plugs_.bin, plugs_.bins,
                                         plugs_.area)});
-    row.push_back({"plug_height", n, by_id});
+    row.push_back({"plug_height", ids_.size(), by_id});
   }
   if (!tagged_ids_.empty()) {
     const std::vector<double>& previous = history_["tagged_impulse"];

@@ -1,5 +1,7 @@
 #include "scenarios/analysis/tagged_bodies.hpp"
 
+#include <limits>
+
 #include <cmath>
 #include <sstream>
 
@@ -25,8 +27,9 @@ void sample_tagged_bodies(const CollisionMethod& sim, const double* previous_imp
   const TaggedImpulses& tagged = sim.statistics().tagged;
   const std::size_t T = tagged.body_count(), C = tagged.partners();
   if (T == 0) return;
-  // Method index of each body (slot order).
-  std::vector<std::size_t> index(T, 0);
+  // Method index of each body (slot order); a body that left (an outflow) has none.
+  constexpr std::size_t kGone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> index(T, kGone);
   for (std::size_t i = 0; i < tagged.slot_of.size(); ++i)
     if (tagged.slot_of[i] >= 0) index[static_cast<std::size_t>(tagged.slot_of[i])] = i;
   const double window = sim.time() - previous_time;
@@ -34,7 +37,9 @@ void sample_tagged_bodies(const CollisionMethod& sim, const double* previous_imp
   std::vector<double> position, velocity, impulse, force, by_partner;
   Vec3 mean_velocity = Vec3::Zero(), mean_force = Vec3::Zero();
   for (std::size_t k = 0; k < T; ++k) {
-    const Vec3 r = sim.position(index[k]), v = sim.velocity(index[k]);
+    const bool gone = index[k] == kGone;
+    const Vec3 r = gone ? Vec3::Constant(NAN) : sim.position(index[k]);
+    const Vec3 v = gone ? Vec3::Constant(NAN) : sim.velocity(index[k]);
     position.insert(position.end(), {r.x(), r.y(), r.z()});
     velocity.insert(velocity.end(), {v.x(), v.y(), v.z()});
     mean_velocity += v;

@@ -16,6 +16,8 @@ Writes, as 150 dpi PNGs named after the run file:
                            inlet velocity, with the buoyant weight per area W/A of the particles
                            (the level a fluidized bed's pressure drop must reach);
   RUN_gas_field.png        runs with a gas: porosity and gas velocity of the snapshot;
+  RUN_flow.png             runs with inflow or outflow: mass in and out against the set rates,
+                           particles present (flow_plots.py);
   RUN_mixing.png, RUN_collisions.png   the run's analysis (analysis_plots.py).
 
 Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
@@ -44,6 +46,7 @@ from matplotlib.lines import Line2D  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analysis_plots import analysis_figures  # noqa: E402
+from flow_plots import plot_flow  # noqa: E402
 
 DPI = 150
 plt.rcParams.update({
@@ -362,6 +365,8 @@ def main(argv=None):
                    ("collision_rates", lambda p: plot_collision_rates(run, p)),
                    ("snapshot", lambda p: plot_snapshot(run, p, args.snapshot, args.axes,
                                                         args.slab))]
+        if "particles_present" in run["timeseries"]:
+            figures.append(("flow", lambda p: plot_flow(run, p, DPI)))
         if "gas" in run:
             figures += [("gas", lambda p: plot_gas(run, p)),
                         ("gas_field", lambda p: plot_gas_field(run, p, args.snapshot))]

@@ -12,10 +12,8 @@ namespace carom {
 
 using namespace output_detail;
 
-
-
 void write_checkpoint(const std::string& path, const CollisionMethod& sim, const RunInfo& info,
-                      const GasCoupling* gas) {
+                      const GasCoupling* gas, const FlowBoundaries* flow) {
   const std::string temporary = path + ".tmp";
   bool created = false;
   try {
@@ -24,6 +22,7 @@ void write_checkpoint(const std::string& path, const CollisionMethod& sim, const
     write_info(file, info, kCheckpointKind);
     sim.save_state(file.create_group("state"));
     if (gas != nullptr) gas->save(file.create_group("gas"));
+    if (flow != nullptr) flow->save(file.create_group("flow"));
     file.close();
     replace_file(temporary, path);
   } catch (...) {

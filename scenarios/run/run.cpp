@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "scenarios/run/flow_run.hpp"
 #include "scenarios/run/gas_run.hpp"
 #include "scenarios/run/output_estimate.hpp"
 #include "scenarios/run/progress.hpp"
@@ -64,8 +65,9 @@ struct Schedule {
 };
 
 /// The loop shared by run and resume. `fresh`: a new run, whose t = 0 outputs are written here.
-int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAnalysis& analysis, const Scene& scene,
-             const RunInfo& info, const fs::path& dir, double end_time, bool fresh, bool quiet) {
+int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries* flow, RunFile& file,
+             RunAnalysis& analysis, const Scene& scene, const RunInfo& info, const fs::path& dir,
+             double end_time, bool fresh, bool quiet) {
   install_stop_handlers();
   const std::string checkpoint_path = (dir / "checkpoint.h5").string();
   const std::string summary_path = (dir / "summary.json").string();
@@ -75,7 +77,15 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
   stretch.start_statistics = sim.statistics();
   stretch.gas = gas;
   if (gas != nullptr) stretch.gas_start = gas->times();
+  stretch.flow = flow;
+  if (flow != nullptr) stretch.flow_start = flow_start(*flow, sim.time());
   stretch.averages.sample(sim);
+  auto append_sample = [&] {
+    SeriesRow row = analysis.sample(sim, gas);
+    if (flow != nullptr) append_flow_series(*flow, sim, row);
+    file.append_sample(sim, gas, row);
+  };
+  auto checkpoint = [&] { write_checkpoint(checkpoint_path, sim, info, gas, flow); };
 
   Schedule snapshots{scene.output.snapshot_every}, samples{scene.output.sample_every},
       checkpoints{scene.output.checkpoint_every};
@@ -86,7 +96,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
   double last_snapshot = sim.time(), last_sample = sim.time();
   if (fresh) {
     file.write_snapshot(sim, gas);
-    file.append_sample(sim, gas, analysis.sample(sim, gas));
+    append_sample();
     snapshots.pass(sim.time());
     samples.pass(sim.time());
     checkpoints.pass(sim.time());
@@ -133,12 +143,12 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
         snapshots.pass(t);
       }
       if (samples.due(t)) {
-        file.append_sample(sim, gas, analysis.sample(sim, gas));
+        append_sample();
         last_sample = t;
         samples.pass(t);
       }
       if (checkpoints.due(t)) {
-        write_checkpoint(checkpoint_path, sim, info, gas);
+        checkpoint();
         checkpoints.pass(t);
       }
       if (averages.due(t) || t >= end_time) {
@@ -150,7 +160,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
       if (chunk_limited)
         chunk *= std::clamp(0.2 / std::max(spent, 1e-6), 0.5, 2.0);
       if (g_stop) {
-        write_checkpoint(checkpoint_path, sim, info, gas);
+        checkpoint();
         finish("interrupted", "stopped by a signal at t = " + format_number(t) + " s; continue with: carom resume " + dir.string());
         std::cerr << "carom: interrupted at t = " << t << " s; checkpoint written. Continue with: carom resume "
                   << dir.string() << "\n";
@@ -171,8 +181,8 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, RunFile& file, RunAna
     return kExitFailure;
   }
   if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
-  if (last_sample < sim.time()) file.append_sample(sim, gas, analysis.sample(sim, gas));
-  write_checkpoint(checkpoint_path, sim, info, gas);
+  if (last_sample < sim.time()) append_sample();
+  checkpoint();
   finish("completed", "");
   if (!quiet) {
     const RunStatistics& s = sim.statistics();
@@ -203,7 +213,8 @@ void prepare_output_directory(const fs::path& dir, bool overwrite) {
                            "run_gas_field.png",
                            "run_mixing.png",
                            "run_collisions.png",
-                           "run_profiles.png"};
+                           "run_profiles.png",
+                           "run_flow.png"};
   std::error_code error;
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");
@@ -251,6 +262,12 @@ int run_scene(Scene scene, const RunOptions& options) {
   const fs::path dir = options.out_dir;
   prepare_output_directory(dir, options.overwrite);
   const RunInfo info{scene.text, scene.name, scene.seed};
+  std::unique_ptr<FlowBoundaries> flow;
+  try {
+    flow = attach_flow(*sim, scene);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": [[inflow]]/[[outflow]]: " + e.what());
+  }
   std::unique_ptr<GasCoupling> gas;
   try {
     gas = attach_gas(*sim, scene);
@@ -260,7 +277,8 @@ int run_scene(Scene scene, const RunOptions& options) {
   RunFile file((dir / "run.h5").string(), info, sim->system(), gas.get());
   RunAnalysis analysis(scene, *sim);
   analysis.write_setup(file.path());
-  return run_loop(*sim, gas.get(), file, analysis, scene, info, dir, scene.end_time, true, options.quiet);
+  return run_loop(*sim, gas.get(), flow.get(), file, analysis, scene, info, dir, scene.end_time, true,
+                  options.quiet);
 }
 
 int resume_run(const std::string& directory, std::optional<double> end_time, bool quiet) {
@@ -294,6 +312,16 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   // A later end (--end) writes more: the whole run's output, estimated as for `carom run`, must
   // fit too, checked before anything is written.
   check_output_size(scene, estimate_output(scene, sim->system().particles.size()), dir);
+  std::unique_ptr<FlowBoundaries> flow;
+  try {
+    std::optional<h5::Group> saved_flow;
+    if (checkpoint.has_flow()) saved_flow = checkpoint.flow_state();
+    if (scene.flow.any() && !saved_flow)
+      throw std::runtime_error("the scene has inflows or outflows but the checkpoint holds no /flow state");
+    flow = attach_flow(*sim, scene, saved_flow ? &*saved_flow : nullptr);
+  } catch (const std::exception& e) {
+    throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
+  }
   std::optional<h5::Group> saved_gas;
   if (checkpoint.has_gas()) saved_gas = checkpoint.gas_state();
   std::unique_ptr<GasCoupling> gas;
@@ -306,7 +334,7 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   checkpoint.file.reset();  // everything is read: the run writes its next checkpoint over it
   RunAnalysis analysis(scene, *sim, (dir / "run.h5").string(), now);
   std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());
-  return run_loop(*sim, gas.get(), *file, analysis, scene, info, dir, end, false, quiet);
+  return run_loop(*sim, gas.get(), flow.get(), *file, analysis, scene, info, dir, end, false, quiet);
 }
 
 }  // namespace carom

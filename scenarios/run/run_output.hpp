@@ -32,12 +32,14 @@
 /// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
 /// scene_name; /scene; /state: the method's state, attribute method = its kind (for the
 /// event-driven engine see events/event_driven/engine_state.hpp); /gas: the gas's state when
-/// the scene has one (named datasets, fluid/coupling_state.cpp). Doubles are stored as native
+/// the scene has one (named datasets, fluid/coupling_state.cpp); /flow: the inflows' and
+/// outflows' state when the scene has them (events/flow/). Doubles are stored as native
 /// doubles: bit for bit.
 #include <cstdint>
 #include <memory>
 #include <string>
 
+#include "events/flow/flow_boundaries.hpp"
 #include "events/method.hpp"
 #include "fluid/coupling.hpp"
 #include "scenarios/analysis/run_analysis.hpp"
@@ -82,7 +84,7 @@ class RunFile {
 /// Writes a checkpoint atomically (to a temporary file, then renamed over `path`), so a crash
 /// while writing never destroys the previous checkpoint.
 void write_checkpoint(const std::string& path, const CollisionMethod& sim, const RunInfo& info,
-                      const GasCoupling* gas = nullptr);
+                      const GasCoupling* gas = nullptr, const FlowBoundaries* flow = nullptr);
 
 /// A checkpoint read back: what identifies the run, and the file kept open for the method's
 /// state (restore_method) and the gas's.
@@ -94,6 +96,9 @@ struct Checkpoint {
   /// Whether the run had a gas, and its saved state (GasCoupling::save), for attach_gas.
   bool has_gas() const { return file->contains("gas"); }
   h5::Group gas_state() const { return file->open_group("gas"); }
+  /// Whether the run had inflows or outflows, and their saved state (FlowBoundaries::save).
+  bool has_flow() const { return file->contains("flow"); }
+  h5::Group flow_state() const { return file->open_group("flow"); }
 };
 Checkpoint read_checkpoint(const std::string& path);
 

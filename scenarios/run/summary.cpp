@@ -68,6 +68,14 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
 
   std::vector<std::size_t> per_species(S, 0);
   for (std::uint32_t s : system.particles.species) ++per_species[s];
+  // Particle-seconds of each species over the stretch: the count now times its length, or with
+  // inflow and outflow the time integral of the number present.
+  std::vector<double> particle_seconds(S);
+  for (std::size_t s = 0; s < S; ++s) particle_seconds[s] = static_cast<double>(per_species[s]) * dt;
+  if (stretch.flow != nullptr) {
+    const std::vector<double> now = stretch.flow->particle_seconds_at(sim.time());
+    for (std::size_t s = 0; s < S; ++s) particle_seconds[s] = now[s] - stretch.flow_start.particle_seconds[s];
+  }
 
   std::ostringstream j;
   j << "{\n";
@@ -92,7 +100,7 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
   for (std::size_t s = 0, first = 1; s < S; ++s)
     for (std::size_t t = 0; t < S; ++t, first = 0) {
       const double count = static_cast<double>(now.pair(s, t) - before.pair(s, t)) * (s == t ? 2.0 : 1.0);
-      const double rate = per_species[s] > 0 && dt > 0 ? count / (static_cast<double>(per_species[s]) * dt) : NAN;
+      const double rate = particle_seconds[s] > 0 ? count / particle_seconds[s] : NAN;
       j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "-" + system.species[t].name) << ": "
         << json_number(rate);
     }
@@ -157,6 +165,8 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
       << ", \"interpolation_seconds\": " << json_number(interpolation)
       << ", \"event_seconds\": " << json_number(stretch.wall_seconds - mapping - solve - interpolation) << "}";
   }
+  if (stretch.flow != nullptr)
+    j << ",\n  \"flow\": " << flow_summary_json(*stretch.flow, stretch.flow_start, stretch.start_time, sim.time());
   if (!stretch.analysis_json.empty()) j << ",\n  \"analysis\": " << stretch.analysis_json;
   j << "\n}\n";
   return j.str();

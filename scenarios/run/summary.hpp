@@ -11,7 +11,9 @@
 ///   particles, events, collisions, events_total, collisions_total
 ///   events_per_second, collisions_per_second     per wall-clock second
 ///   collision_rate_per_particle   {"a-b": collisions per unit time of one particle of species a
-///                             with particles of species b, 1/s}
+///                             with particles of species b, 1/s; with inflow or outflow, per
+///                             particle present: the count over the time integral of the
+///                             number of particles of a present}
 ///   enskog_rate_per_particle      the same from Enskog at the time-averaged temperature
 ///                             (periodic, gravity-free scenes without extra walls; else null)
 ///   wall_collisions          {"species@wall": count in the stretch}
@@ -25,6 +27,8 @@
 ///                            its iteration limit), mapping_seconds, solve_seconds,
 ///                            interpolation_seconds (wall time of each part of the fluid steps),
 ///                            event_seconds (the rest of the wall time: the particles' events)}
+///   flow                     runs with inflow or outflow (flow_run.hpp): each inflow's set and
+///                            measured mass flow, each outflow's, mean particles present
 ///   analysis                 the run's analysis from t = 0 (run_analysis.hpp): mixing {rate,
 ///                            time_to_m08, ...}, dispersion, collision_frequency (measured,
 ///                            per particle, whole run), kinetic_theory_frequency,
@@ -34,6 +38,7 @@
 
 #include "events/method.hpp"
 #include "fluid/coupling.hpp"
+#include "scenarios/run/flow_run.hpp"
 #include "scenarios/scene/scene.hpp"
 
 namespace carom {
@@ -71,6 +76,8 @@ struct RunStretch {
   const GasCoupling* gas = nullptr;    ///< The run's gas, if any.
   CouplingTimes gas_start;             ///< Its timers when the stretch began.
   std::string analysis_json;           ///< The "analysis" object (run_analysis.hpp); empty: none.
+  const FlowBoundaries* flow = nullptr;  ///< The run's inflows and outflows, if any.
+  FlowStart flow_start;                ///< Their counters when the stretch began.
 };
 
 /// The summary as JSON text.

@@ -1,0 +1,61 @@
+"""The figure of a run with inflow and outflow (scenes with [[inflow]] or [[outflow]]).
+
+RUN_flow.png, two panels against time:
+  left:  mass entered through each inflow and mass left through each outflow (kg, cumulative,
+         /timeseries/entered_mass and left_mass), with each inflow's set rate as the line
+         mass_flow * t (the inflows place what they owe exactly: the points sit on the line
+         within one particle's mass unless the inlet slab was full);
+  right: particles present of each species (/timeseries/particles_present).
+"""
+import matplotlib.pyplot as plt
+import numpy as np
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def inflow_rates(run):
+    """Set mass flow of each inflow (kg/s), read from the scene stored in the run file."""
+    import tomllib
+
+    scene = tomllib.loads(text(run["scene"][()]))
+    return [(entry.get("name", f"inflow_{k + 1}"), float(entry["mass_flow"]))
+            for k, entry in enumerate(scene.get("inflow", []))]
+
+
+def plot_flow(run, path, dpi):
+    series = run["timeseries"]
+    t = series["time"][()]
+    fig, (mass, count) = plt.subplots(1, 2, figsize=(9.6, 3.8))
+    colours = plt.get_cmap("tab10").colors
+    k = 0
+    if "entered_mass" in series:
+        entered = series["entered_mass"][()].reshape(len(t), -1)
+        for j, (name, rate) in enumerate(inflow_rates(run)[:entered.shape[1]]):
+            c = colours[k % len(colours)]
+            mass.plot(t, entered[:, j], "o", ms=3, color=c, label=f"in: {name}")
+            mass.plot(t, rate * (t - t[0]), "-", lw=1, color=c, label=f"set: {rate:g} kg/s")
+            k += 1
+    if "left_mass" in series:
+        left = series["left_mass"][()].reshape(len(t), -1)
+        for j in range(left.shape[1]):
+            mass.plot(t, left[:, j], "s", ms=3, color=colours[k % len(colours)],
+                      label=f"out: outflow {j + 1}")
+            k += 1
+    mass.set_xlabel("time $t$ (s)")
+    mass.set_ylabel("mass (kg), cumulative")
+    mass.set_title("Mass in and out")
+    mass.legend(loc="upper left")
+    present = series["particles_present"][()].reshape(len(t), -1)
+    names = [text(n) for n in run["species/name"][()]]
+    for s in range(present.shape[1]):
+        count.plot(t, present[:, s], "-", lw=1.4, color=colours[s % len(colours)], label=names[s])
+    count.set_xlabel("time $t$ (s)")
+    count.set_ylabel("particles present")
+    count.set_title("Particles in the domain")
+    count.set_ylim(bottom=0)
+    count.legend(loc="best")
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)

@@ -1,18 +1,18 @@
 #include "events/flow/flow_definitions.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace carom {
 
 namespace {
 
-/// Shortest text that reads back as x.
+/// A number for a message, to 6 digits (no round-off tail as -0.0050000000000000044).
 std::string text(double x) {
   char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
 }
 
 std::string interval_text(double lo, double hi) {
@@ -131,9 +131,9 @@ std::optional<FlowProblem> check_inflow_against_outflow(const Inflow& inflow, do
         "plane", "puts the inlet slab " +
                      interval_text(slab.lower[outflow.axis], slab.upper[outflow.axis]) + " m on " +
                      axis_name(outflow.axis) + " partly beyond outflow \"" + outflow.name +
-                     "\" (plane " + text(outflow.plane) + " m, " +
+                     "\" (plane " + text(outflow.plane) + " m; centres " +
                      (outflow.direction > 0 ? "above" : "below") +
-                     " leaves): entering particles would leave at once"};
+                     " it leave): entering particles would leave at once"};
   return std::nullopt;
 }
 

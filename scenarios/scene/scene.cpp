@@ -13,6 +13,7 @@
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/collisions_scene.hpp"
 #include "scenarios/scene/domain_scene.hpp"
+#include "scenarios/scene/flow_scene.hpp"
 #include "scenarios/scene/initial_scene.hpp"
 #include "scenarios/scene/particles_scene.hpp"
 #include "scenarios/scene/soft_sphere_scene.hpp"
@@ -50,7 +51,8 @@ namespace {
 
 const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
                                             "collisions", "flight", "initial", "time",    "output", "engine", "gas",
-                                            "analysis", "method", "soft_sphere", "monte_carlo"};
+                                            "analysis", "method", "soft_sphere", "monte_carlo", "inflow",
+                                            "outflow", "flow"};
 
 void read_meta(TableReader& root, Scene& scene, const std::string& fallback_name) {
   scene.name = fallback_name;
@@ -113,6 +115,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   read_method(root, scene);
   read_soft_sphere(root, scene);
   read_monte_carlo(root, scene);
+  read_flow(root, scene);
   root.finish();
   return scene;
 }

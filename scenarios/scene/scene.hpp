@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/system.hpp"
+#include "events/flow/flow_definitions.hpp"
 #include "events/method_factory.hpp"
 #include "fluid/gas_settings.hpp"
 #include "scenarios/scene/scene_reader.hpp"
@@ -79,6 +80,18 @@ struct FlightSettings {
   double particle_step = 0;  ///< Kick: time between drag kicks dt_p, s.
 };
 
+/// [[inflow]], [[outflow]] and [flow]: particles entering through inlet rectangles and leaving
+/// through outlet planes (events/flow/; SCENES.md, "Inflow and outflow").
+struct FlowSettings {
+  std::vector<Inflow> inflows;    ///< [[inflow]], in scene order (depth 0: the default depth).
+  std::vector<Outflow> outflows;  ///< [[outflow]], in scene order.
+  /// Time between flow steps, s: flow.interval; default the gas time step with a gas (then a
+  /// whole multiple of it), else 1e-3 s.
+  double interval = 1e-3;
+  /// True when the scene has an inflow or an outflow.
+  bool any() const { return !inflows.empty() || !outflows.empty(); }
+};
+
 /// [analysis]: what a run measures beyond the standard time series (SCENES.md, "Analysis").
 /// [analysis.profiles]: statistics in bins across sections at chosen heights
 /// (scenarios/analysis/section_profiles.hpp).
@@ -135,6 +148,7 @@ struct Scene {
   std::string settle_where;   ///< "file:line" of initial.settle_time, for messages.
   FlightSettings flight;      ///< [flight].
   GasSettings gas;            ///< [gas]; coupling None when absent.
+  FlowSettings flow;          ///< [[inflow]], [[outflow]], [flow]; none when absent.
   double end_time = 0;        ///< s.
   OutputSchedule output;
   AnalysisSettings analysis;  ///< [analysis].

@@ -385,10 +385,16 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
   c.impulse_rate.assign(S * S, NAN);
   c.wall_rate.assign(S, NAN);
   c.weight.assign(S, 0.0);
+  // Particle-seconds of each species since t = 0: the count times the duration, or with inflow
+  // and outflow the time integral of the number present.
+  std::vector<double> particle_seconds(S);
+  for (std::size_t s = 0; s < S; ++s)
+    particle_seconds[s] = static_cast<double>(c.count[s]) * c.duration;
+  if (flow_ != nullptr) particle_seconds = flow_->particle_seconds_at(sim.time());
   for (std::size_t s = 0; s < S; ++s) {
     c.weight[s] = system.species[s].mass() * g;
-    if (c.count[s] == 0 || c.duration <= 0.0) continue;
-    const double per = 1.0 / (static_cast<double>(c.count[s]) * c.duration);
+    if (!(particle_seconds[s] > 0.0)) continue;
+    const double per = 1.0 / particle_seconds[s];
     for (std::size_t t = 0; t < S; ++t) {
       // Each s-s collision involves two particles of s.
       c.measured_rate[s * S + t] = static_cast<double>(st.pair(s, t)) * (s == t ? 2.0 : 1.0) * per;

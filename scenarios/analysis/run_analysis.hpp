@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "events/flow/flow_boundaries.hpp"
 #include "events/method.hpp"
 #include "fluid/coupling.hpp"
 #include "scenarios/analysis/dispersion.hpp"
@@ -63,6 +64,10 @@ class RunAnalysis {
   /// report.md: the numbers, with what they say about the mechanism.
   std::string report(const CollisionMethod& sim) const;
 
+  /// The run's inflows and outflows (null: none): collision frequencies are then per particle
+  /// present (collisions over the time integral of the number of particles).
+  void set_flow(const FlowBoundaries* flow) { flow_ = flow; }
+
   /// Sample grid of the Lacey index, and of the local fields.
   const SampleGrid& mixing_grid() const { return mixing_grid_; }
   const SampleGrid& field_grid() const { return field_grid_; }
@@ -94,6 +99,7 @@ class RunAnalysis {
     std::vector<PlugConclusions> plugs;  ///< One per threshold (empty: no plug analysis).
   };
   Conclusions conclude(const CollisionMethod& sim) const;
+  const FlowBoundaries* flow_ = nullptr;
 
   const Scene& scene_;
   int vertical_ = 2;    ///< Axis opposite gravity (z without gravity).

@@ -15,13 +15,16 @@ def text(value):
     return value.decode() if isinstance(value, bytes) else str(value)
 
 
-def inflow_rates(run):
-    """Set mass flow of each inflow (kg/s), read from the scene stored in the run file."""
+def flow_definitions(run):
+    """(name, set mass flow in kg/s) of each inflow and the name of each outflow, read from the
+    scene stored in the run file (names default as carom's: inflow_1, outflow_1, ...)."""
     import tomllib
 
     scene = tomllib.loads(text(run["scene"][()]))
-    return [(entry.get("name", f"inflow_{k + 1}"), float(entry["mass_flow"]))
-            for k, entry in enumerate(scene.get("inflow", []))]
+    inflows = [(entry.get("name", f"inflow_{k + 1}"), float(entry["mass_flow"]))
+               for k, entry in enumerate(scene.get("inflow", []))]
+    outflows = [entry.get("name", f"outflow_{k + 1}") for k, entry in enumerate(scene.get("outflow", []))]
+    return inflows, outflows
 
 
 def plot_flow(run, path, dpi):
@@ -29,19 +32,19 @@ def plot_flow(run, path, dpi):
     t = series["time"][()]
     fig, (mass, count) = plt.subplots(1, 2, figsize=(9.6, 3.8))
     colours = plt.get_cmap("tab10").colors
+    inflows, outflows = flow_definitions(run)
     k = 0
     if "entered_mass" in series:
         entered = series["entered_mass"][()].reshape(len(t), -1)
-        for j, (name, rate) in enumerate(inflow_rates(run)[:entered.shape[1]]):
+        for j, (name, rate) in enumerate(inflows[:entered.shape[1]]):
             c = colours[k % len(colours)]
             mass.plot(t, entered[:, j], "o", ms=3, color=c, label=f"in: {name}")
             mass.plot(t, rate * (t - t[0]), "-", lw=1, color=c, label=f"set: {rate:g} kg/s")
             k += 1
     if "left_mass" in series:
         left = series["left_mass"][()].reshape(len(t), -1)
-        for j in range(left.shape[1]):
-            mass.plot(t, left[:, j], "s", ms=3, color=colours[k % len(colours)],
-                      label=f"out: outflow {j + 1}")
+        for j, name in enumerate(outflows[:left.shape[1]]):
+            mass.plot(t, left[:, j], "s", ms=3, color=colours[k % len(colours)], label=f"out: {name}")
             k += 1
     mass.set_xlabel("time $t$ (s)")
     mass.set_ylabel("mass (kg), cumulative")

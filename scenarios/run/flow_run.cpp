@@ -52,6 +52,7 @@ void append_flow_series(const FlowBoundaries& flow, const CollisionMethod& sim, 
 
 FlowStart flow_start(const FlowBoundaries& flow, double time) {
   FlowStart s;
+  s.last_step = flow.last_time();
   s.particle_seconds = flow.particle_seconds_at(time);
   for (std::size_t k = 0; k < flow.inflows().size(); ++k) {
     s.entered_mass.push_back(flow.inflow_counters(k).entered_mass);
@@ -68,6 +69,9 @@ std::string flow_summary_json(const FlowBoundaries& flow, const FlowStart& start
                               double time) {
   const double span = time - start_time;
   auto rate = [&](double mass) { return span > 0 ? mass / span : NAN; };
+  // Inflows place what they owe at each flow step: their rate is measured between steps.
+  const double steps = flow.last_time() - start.last_step;
+  auto placed_rate = [&](double mass) { return steps > 0 ? mass / steps : NAN; };
   std::ostringstream j;
   j << "{\"inflows\": [";
   for (std::size_t k = 0; k < flow.inflows().size(); ++k) {
@@ -75,9 +79,10 @@ std::string flow_summary_json(const FlowBoundaries& flow, const FlowStart& start
     const InflowCounters& c = flow.inflow_counters(k);
     j << (k ? ", " : "") << "{\"name\": " << json_string(in.name)
       << ", \"set_mass_flow\": " << json_number(in.mass_flow)
-      << ", \"mass_flow\": " << json_number(rate(c.entered_mass - start.entered_mass[k]))
+      << ", \"mass_flow\": " << json_number(placed_rate(c.entered_mass - start.entered_mass[k]))
       << ", \"mass_flow_resolution\": "
-      << json_number(rate(c.entered > 0 ? c.entered_mass / static_cast<double>(c.entered) : NAN))
+      << json_number(
+             placed_rate(c.entered > 0 ? c.entered_mass / static_cast<double>(c.entered) : NAN))
       << ", \"entered\": " << (c.entered - start.entered[k]) << ", \"waiting\": " << c.waiting()
       << ", \"blocked_steps\": " << c.blocked_steps << "}";
   }

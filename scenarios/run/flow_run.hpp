@@ -31,6 +31,7 @@ void append_flow_series(const FlowBoundaries& flow, const CollisionMethod& sim, 
 
 /// What the flow counters stood at when a stretch of the run began (for summary.json).
 struct FlowStart {
+  double last_step = 0;                  ///< Time of the flow's last step, s.
   std::vector<double> particle_seconds;  ///< Per species, s.
   std::vector<double> entered_mass;      ///< Per inflow, kg.
   std::vector<double> left_mass;         ///< Per outflow, kg.
@@ -40,9 +41,11 @@ struct FlowStart {
 FlowStart flow_start(const FlowBoundaries& flow, double time);
 
 /// The "flow" object of summary.json over the stretch [start_time, time]: each inflow's set and
-/// measured mass flow (kg/s) with the measurement's resolution (one particle's mass over the
-/// stretch: placement is exact bookkeeping, not a random count), particles entered and waiting;
-/// each outflow's mass flow and count; the mean number of particles present per species.
+/// measured mass flow (kg/s: the mass placed between the flow steps that began and ended the
+/// stretch, over their distance) with the measurement's resolution (one particle's mass over
+/// that time: placement is exact bookkeeping, not a random count), particles entered and
+/// waiting; each outflow's mass flow and count over the stretch; the mean number of particles
+/// present per species.
 std::string flow_summary_json(const FlowBoundaries& flow, const FlowStart& start, double start_time,
                               double time);
 

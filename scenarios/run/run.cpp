@@ -78,6 +78,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   stretch.gas = gas;
   if (gas != nullptr) stretch.gas_start = gas->times();
   stretch.flow = flow;
+  analysis.set_flow(flow);
   if (flow != nullptr) stretch.flow_start = flow_start(*flow, sim.time());
   stretch.averages.sample(sim);
   auto append_sample = [&] {

@@ -1,5 +1,6 @@
 #include "scenarios/scene/flow_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -108,6 +109,13 @@ void read_flow(TableReader& root, Scene& scene) {
     t.finish();
     names.push_back(in.name);
     flow.inflows.push_back(in);
+    // The methods size their steps and grids for what enters (System::entering_species): the
+    // species, and the fastest entering speed (mean plus three standard deviations).
+    std::vector<std::uint32_t>& entering = scene.system.entering_species;
+    if (std::find(entering.begin(), entering.end(), in.species) == entering.end())
+      entering.push_back(in.species);
+    scene.system.entering_speed =
+        std::max(scene.system.entering_speed, in.velocity.norm() + 3.0 * in.velocity_spread.norm());
   }
 }
 

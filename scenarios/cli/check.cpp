@@ -88,6 +88,27 @@ static void describe_gas(const Scene& scene, std::ostringstream& out) {
            "step, events exact)\n";
 }
 
+/// The inflows and outflows ([[inflow]], [[outflow]], [flow]).
+static void describe_flow(const Scene& scene, std::ostream& out) {
+  const FlowSettings& flow = scene.flow;
+  if (!flow.any()) return;
+  out << "\nflow (particles entering and leaving at flow steps every " << format_number(flow.interval) << " s):\n";
+  for (const Inflow& in : flow.inflows) {
+    const Species& sp = scene.system.species[in.species];
+    const int a = in.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+    out << "  inflow \"" << in.name << "\": " << sp.name << " at " << format_number(in.mass_flow) << " kg/s ("
+        << std::llround(in.mass_flow / sp.mass()) << " particles/s) through " << "xyz"[a] << " = "
+        << format_number(in.plane) << " m, " << "xyz"[b] << " in [" << format_number(in.lower[b]) << ", "
+        << format_number(in.upper[b]) << "], " << "xyz"[c] << " in [" << format_number(in.lower[c]) << ", "
+        << format_number(in.upper[c]) << "] m, slab " << format_number(inflow_depth(in, sp, flow.interval)) << " m "
+        << (in.direction > 0 ? "above" : "below") << "; velocity " << vec(in.velocity) << " +- "
+        << vec(in.velocity_spread) << " m/s\n";
+  }
+  for (const Outflow& o : flow.outflows)
+    out << "  outflow \"" << o.name << "\": centres " << (o.direction > 0 ? "above " : "below ") << "xyz"[o.axis]
+        << " = " << format_number(o.plane) << " m leave\n";
+}
+
 std::string describe_scene(const Scene& scene) {
   const System& system = scene.system;
   const ParticleStore& p = system.particles;
@@ -131,6 +152,8 @@ std::string describe_scene(const Scene& scene) {
   out << "  total " << p.size() << " particles, solid volume fraction of the domain " << format_number(solid / d.volume()) << "\n";
   if (scene.temperature > 0) out << "  initial granular temperature " << format_number(scene.temperature) << " J (Maxwellian)\n";
   if (scene.rms_velocity > 0) out << "  initial rms velocity " << format_number(scene.rms_velocity) << " m/s (Maxwellian)\n";
+
+  describe_flow(scene, out);
 
   out << "\ncontact laws (Walton):\n";
   bool friction = false, dissipative = false;

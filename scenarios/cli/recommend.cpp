@@ -206,7 +206,10 @@ SceneNumbers scene_numbers(const Scene& scene) {
   for (std::size_t s = 0; s < S; ++s)
     if (!system.species[s].fixed) moving += n.species[s].mass_share;
   if (moving == 0.0) {
-    n.lasting_reason = "every particle is fixed";
+    n.lasting_reason = system.particles.size() == 0
+                           ? "no particles at t = 0: inflows bring them later, and these "
+                             "estimates from t = 0 say nothing about those"
+                           : "every particle is fixed";
   } else if (has_gas && n.inlet_velocity > 0 && g > 0) {
     for (std::size_t s = 0; s < S; ++s)
       if (!system.species[s].fixed && n.inlet_velocity <= n.species[s].minimum_fluidization)

@@ -51,7 +51,11 @@ std::size_t planned_particle_count(const Scene& scene) {
 }
 
 OutputEstimate estimate_output(const Scene& scene, std::size_t particles) {
-  const double n = static_cast<double>(particles);
+  // With inflows, as if every particle that enters by the end stayed: an upper bound.
+  double entering = 0.0;
+  for (const Inflow& in : scene.flow.inflows)
+    entering += std::ceil(in.mass_flow * scene.end_time / scene.system.species[in.species].mass());
+  const double n = static_cast<double>(particles) + entering;
   const double S = static_cast<double>(scene.system.species.size());
   const double W = static_cast<double>(scene.system.walls.size());
   const bool gas = scene.gas.coupling != CouplingLevel::None;

@@ -1,7 +1,6 @@
 #include "scenarios/scene/flow_scene.hpp"
 
 #include <cmath>
-#include <limits>
 #include <string>
 
 namespace carom {

@@ -67,6 +67,7 @@ TEST(FlowBoundaries, MassInOverAnyWindowIsTheSetRateWithinOneParticle) {
   EXPECT_LT(worst, m);
   EXPECT_EQ(flow.inflow_counters(0).blocked_steps, 0u);
   EXPECT_EQ(flow.inflow_counters(0).waiting(), 0u);
+  EXPECT_EQ(flow.blocked_message(0), "");
   EXPECT_GT(worst, 0.5 * m) << "the windows should see the fractional remainder";
   // Particles cross 8.5 cm in 85 steps: the outflow takes them all but those still on the way.
   const OutflowCounters& out = flow.outflow_counters(0);
@@ -99,6 +100,13 @@ TEST(FlowBoundaries, FullSlabReportsTheWaitingParticles) {
   EXPECT_EQ(c.blocked_steps, 20u);
   EXPECT_GE(c.failed_tries, 20u * 50u);
   EXPECT_GT(c.entered, 20u) << "the slab takes some";
+  const std::string message = flow.blocked_message(0);
+  EXPECT_NE(message.find("inflow \"top\" found its slab full at 20 flow step(s)"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find(std::to_string(c.waiting()) + " particle(s) still wait"),
+            std::string::npos)
+      << message;
 }
 
 // Reference: brute force, each particle against each outlet. The flow step's removals are the

@@ -250,6 +250,7 @@ TEST(InflowPlacement, BadDefinitionsAreRefused) {
   System system = duct();
   system.domain.periodic[0] = true;
   system.walls = box_walls(system.domain);
+  system.species.push_back(Species{"post", 2e-3, 2500.0, true});
   const Inflow good = top_inflow(system, 100.0);
   struct Case {
     std::string what;
@@ -280,6 +281,14 @@ TEST(InflowPlacement, BadDefinitionsAreRefused) {
        "beyond outflow \"out\""},
       {"outlet outside", [](Inflow&, Outflow& o) { o.plane = -0.01; },
        "outflow \"out\": plane is not strictly"},
+      {"outlet on a periodic axis",
+       [](Inflow&, Outflow& o) {
+         o.axis = 0;
+         o.plane = 0.01;
+       },
+       "outflow \"out\": axis is a periodic axis"},
+      {"fixed species", [](Inflow& i, Outflow&) { i.species = 1; },
+       "\"top\": species is a fixed species"},
       {"no attempts", [](Inflow& i, Outflow&) { i.attempts = 0; }, "attempts must be at least 1"},
   };
   for (const Case& c : cases) {

@@ -180,6 +180,17 @@ void FlowBoundaries::run_inflow(std::size_t k, double time, const ParticleStore&
   c.owed = due - static_cast<double>(c.entered);
 }
 
+std::string FlowBoundaries::blocked_message(std::size_t k) const {
+  const InflowCounters& c = inflow_counters_[k];
+  if (c.blocked_steps == 0) return "";
+  const Inflow& in = inflows_[k];
+  return "inflow \"" + in.name + "\" found its slab full at " + std::to_string(c.blocked_steps) +
+         " flow step(s) (" + std::to_string(c.failed_tries) + " random places tried were taken); " +
+         std::to_string(c.waiting()) + " particle(s) still wait, " + std::to_string(c.entered) +
+         " entered: the mass that entered is less than mass_flow asks. Lower mass_flow, enlarge "
+         "the rectangle or the depth, or give the particles a speed into the domain";
+}
+
 std::vector<double> FlowBoundaries::particle_seconds_at(double time) const {
   std::vector<double> total = particle_seconds_;
   for (std::size_t s = 0; s < total.size(); ++s)

@@ -61,6 +61,10 @@ class FlowBoundaries {
   const InflowCounters& inflow_counters(std::size_t k) const { return inflow_counters_[k]; }
   const OutflowCounters& outflow_counters(std::size_t k) const { return outflow_counters_[k]; }
 
+  /// A warning for a report when inflow k found its slab full at some step: how often, how
+  /// many particles still wait, and what to change; "" when it never did.
+  std::string blocked_message(std::size_t k) const;
+
   /// Integral over time of the number of particles of each species present, from the start to
   /// the last step, particle s: collision frequencies per particle present are count / this.
   const std::vector<double>& particle_seconds() const { return particle_seconds_; }

@@ -42,7 +42,7 @@ class SlabPlacer {
   const Domain& domain_;
   const std::vector<Wall>& walls_;
   Box grid_;                           ///< centres grown by reach: the cells' extent, m.
-  Vec3 cell_size_ = Vec3::Ones();      ///< m (>= reach, so a query spans two cells per axis).
+  Vec3 cell_size_ = Vec3::Ones();      ///< m (>= reach: a query spans at most 3 cells per axis).
   int cells_[3] = {1, 1, 1};           ///< Cells per axis.
   std::vector<std::int32_t> head_;     ///< First sphere of each cell, -1 when empty.
   std::vector<std::int32_t> next_;     ///< Next sphere in the same cell, -1 at the end.

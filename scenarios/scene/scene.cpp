@@ -6,15 +6,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "scenarios/scene/gas_scene.hpp"
 #include "scenarios/scene/analysis_scene.hpp"
-#include "scenarios/scene/method_scene.hpp"
-#include "scenarios/scene/monte_carlo_scene.hpp"
-#include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/collisions_scene.hpp"
 #include "scenarios/scene/domain_scene.hpp"
 #include "scenarios/scene/flow_scene.hpp"
+#include "scenarios/scene/gas_scene.hpp"
 #include "scenarios/scene/initial_scene.hpp"
+#include "scenarios/scene/method_scene.hpp"
+#include "scenarios/scene/monte_carlo_scene.hpp"
+#include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/particles_scene.hpp"
 #include "scenarios/scene/soft_sphere_scene.hpp"
 #include "scenarios/scene/species_scene.hpp"
@@ -49,10 +49,10 @@ std::size_t region_index(TableReader& t, std::string_view key, const Scene& scen
 
 namespace {
 
-const std::vector<std::string> kSections = {"meta",       "domain", "species", "regions", "walls",  "particles",
-                                            "collisions", "flight", "initial", "time",    "output", "engine", "gas",
-                                            "analysis", "method", "soft_sphere", "monte_carlo", "inflow",
-                                            "outflow", "flow"};
+const std::vector<std::string> kSections = {
+    "meta",   "domain",      "species",     "regions", "walls",   "particles", "collisions",
+    "flight", "initial",     "time",        "output",  "engine",  "gas",       "analysis",
+    "method", "soft_sphere", "monte_carlo", "inflow",  "outflow", "flow"};
 
 void read_meta(TableReader& root, Scene& scene, const std::string& fallback_name) {
   scene.name = fallback_name;

@@ -84,7 +84,8 @@ std::string flow_summary_json(const FlowBoundaries& flow, const FlowStart& start
       << json_number(
              placed_rate(c.entered > 0 ? c.entered_mass / static_cast<double>(c.entered) : NAN))
       << ", \"entered\": " << (c.entered - start.entered[k]) << ", \"waiting\": " << c.waiting()
-      << ", \"blocked_steps\": " << c.blocked_steps << "}";
+      << ", \"blocked_steps\": " << c.blocked_steps
+      << ", \"blocked_message\": " << json_string(flow.blocked_message(k)) << "}";
   }
   j << "], \"outflows\": [";
   for (std::size_t k = 0; k < flow.outflows().size(); ++k) {

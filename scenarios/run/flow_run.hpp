@@ -44,8 +44,9 @@ FlowStart flow_start(const FlowBoundaries& flow, double time);
 /// measured mass flow (kg/s: the mass placed between the flow steps that began and ended the
 /// stretch, over their distance) with the measurement's resolution (one particle's mass over
 /// that time: placement is exact bookkeeping, not a random count), particles entered and
-/// waiting; each outflow's mass flow and count over the stretch; the mean number of particles
-/// present per species.
+/// waiting, and when its slab was ever full, the blocked steps and what to do
+/// (blocked_message); each outflow's mass flow and count over the stretch; the mean number of
+/// particles present per species.
 std::string flow_summary_json(const FlowBoundaries& flow, const FlowStart& start, double start_time,
                               double time);
 

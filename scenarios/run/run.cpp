@@ -185,6 +185,10 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   if (last_sample < sim.time()) append_sample();
   checkpoint();
   finish("completed", "");
+  if (flow != nullptr)  // an inlet slab that was full: the set mass flow was not met
+    for (std::size_t k = 0; k < flow->inflows().size(); ++k)
+      if (const std::string message = flow->blocked_message(k); !message.empty())
+        std::cerr << "carom: warning: " << message << "\n";
   if (!quiet) {
     const RunStatistics& s = sim.statistics();
     std::cout << "carom: " << scene.name << " reached t = " << sim.time() << " s: " << s.events << " events, "

@@ -97,7 +97,7 @@ static void describe_flow(const Scene& scene, std::ostream& out) {
     const Species& sp = scene.system.species[in.species];
     const int a = in.axis, b = (a + 1) % 3, c = (a + 2) % 3;
     out << "  inflow \"" << in.name << "\": " << sp.name << " at " << format_number(in.mass_flow) << " kg/s ("
-        << std::llround(in.mass_flow / sp.mass()) << " particles/s) through " << "xyz"[a] << " = "
+        << format_number(std::round(in.mass_flow / sp.mass())) << " particles/s) through " << "xyz"[a] << " = "
         << format_number(in.plane) << " m, " << "xyz"[b] << " in [" << format_number(in.lower[b]) << ", "
         << format_number(in.upper[b]) << "], " << "xyz"[c] << " in [" << format_number(in.lower[c]) << ", "
         << format_number(in.upper[c]) << "] m, slab " << format_number(inflow_depth(in, sp, flow.interval)) << " m "

@@ -78,7 +78,8 @@ inline std::vector<Vec3> random_polygon(Rng& rng, double size) {
   const Vec3 e2 = e1.cross(unit(rng)).normalized();
   const Vec3 centre = 0.5 * rng.uniform() * unit(rng);
   std::vector<Vec3> out;
-  for (double t : angles) out.push_back(centre + size * std::cos(t) * e1 + minor * std::sin(t) * e2);
+  for (double t : angles)
+    out.push_back(centre + size * std::cos(t) * e1 + minor * std::sin(t) * e2);
   if (rng.uniform() < 0.5) std::reverse(out.begin(), out.end());
   return out;
 }

@@ -56,7 +56,8 @@ TEST(PolygonEventDriven, BounceOffAnInclinedPlateInClosedForm) {
   EXPECT_EQ(sim.statistics().wall(0, plate), 1u);
   EXPECT_LE((sim.velocity(0) - (v_out + later * sim.system().flight.gravity)).norm(),
             1e-12 * v_in.norm());
-  const Vec3 r_out = Vec3(0, 0, z_star) + later * v_out + 0.5 * later * later * sim.system().flight.gravity;
+  const Vec3 r_out =
+      Vec3(0, 0, z_star) + later * v_out + 0.5 * later * later * sim.system().flight.gravity;
   EXPECT_LE((sim.position(0) - r_out).norm(), 1e-12);
 }
 
@@ -116,11 +117,11 @@ TEST(PolygonEventDriven, BeadsOnAnInclinedPlateStayOutAndCloseTheEnergy) {
         side[i] = here;
       }
     }
-    std::printf("[ plate ] %llu collisions (%llu with the plate), worst wall overlap %.2g of a "
-                "radius, worst energy closure %.2g, fastest %.2f m/s\n",
-                (unsigned long long)sim.statistics().collisions(),
-                (unsigned long long)sim.statistics().wall(0, plate), worst_gap, worst_energy,
-                fastest);
+    std::printf(
+        "[ plate ] %llu collisions (%llu with the plate), worst wall overlap %.2g of a "
+        "radius, worst energy closure %.2g, fastest %.2f m/s\n",
+        (unsigned long long)sim.statistics().collisions(),
+        (unsigned long long)sim.statistics().wall(0, plate), worst_gap, worst_energy, fastest);
     EXPECT_LE(worst_gap, 1e-10);
     EXPECT_LT(worst_energy, 1e-11);
     EXPECT_LT(fastest, 2.5) << "the crossing check needs less than 2.5 mm per sample";
@@ -190,8 +191,8 @@ TEST(PolygonMonteCarlo, BallReboundsToESquaredTheHeight) {
   for (double t : {0.0501, impact + 1e-4, 0.1203, apex}) {
     mc.run_until(t);
     const double s = t - impact;
-    const double z = s < 0 ? 0.05 + kA + h - 0.5 * kG * t * t
-                           : 0.05 + kA + rebound * s - 0.5 * kG * s * s;
+    const double z =
+        s < 0 ? 0.05 + kA + h - 0.5 * kG * t * t : 0.05 + kA + rebound * s - 0.5 * kG * s * s;
     EXPECT_NEAR(mc.position(0).z(), z, 1e-12) << "t = " << t;
   }
   EXPECT_NEAR(mc.position(0).z() - 0.05 - kA, e * e * h, 1e-12);

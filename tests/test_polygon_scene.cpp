@@ -14,25 +14,25 @@ namespace {
 
 /// A square plate tilted 30 degrees in a walled box. Line numbers: [domain] is line 1.
 const std::string kPlate =
-    "[domain]\n"                                                                    // 1
-    "min = [-0.05, -0.05, 0.0]\n"                                                   // 2
-    "max = [0.05, 0.05, 0.1]\n"                                                     // 3
-    "gravity = [0.0, 0.0, -9.81]\n"                                                 // 4
-    "[[species]]\n"                                                                 // 5
-    "name = \"bead\"\n"                                                             // 6
-    "diameter = 2.0e-3\n"                                                           // 7
-    "density = 2500.0\n"                                                            // 8
-    "fill = { count = 10, region = \"top\" }\n"                                     // 9
-    "[regions.top]\n"                                                               // 10
-    "min = [-0.01, -0.01, 0.08]\n"                                                  // 11
-    "max = [0.01, 0.01, 0.095]\n"                                                   // 12
-    "[[walls]]\n"                                                                   // 13
-    "name = \"plate\"\n"                                                            // 14
-    "type = \"polygon\"\n"                                                          // 15
+    "[domain]\n"                                 // 1
+    "min = [-0.05, -0.05, 0.0]\n"                // 2
+    "max = [0.05, 0.05, 0.1]\n"                  // 3
+    "gravity = [0.0, 0.0, -9.81]\n"              // 4
+    "[[species]]\n"                              // 5
+    "name = \"bead\"\n"                          // 6
+    "diameter = 2.0e-3\n"                        // 7
+    "density = 2500.0\n"                         // 8
+    "fill = { count = 10, region = \"top\" }\n"  // 9
+    "[regions.top]\n"                            // 10
+    "min = [-0.01, -0.01, 0.08]\n"               // 11
+    "max = [0.01, 0.01, 0.095]\n"                // 12
+    "[[walls]]\n"                                // 13
+    "name = \"plate\"\n"                         // 14
+    "type = \"polygon\"\n"                       // 15
     "vertices = [[-0.03, -0.026, 0.035], [0.03, -0.026, 0.035], [0.03, 0.026, 0.065], "
-    "[-0.03, 0.026, 0.065]]\n"                                                      // 16
-    "[time]\n"                                                                      // 17
-    "end = 0.1\n";                                                                  // 18
+    "[-0.03, 0.026, 0.065]]\n"  // 16
+    "[time]\n"                  // 17
+    "end = 0.1\n";              // 18
 
 const std::string kVertices =
     "vertices = [[-0.03, -0.026, 0.035], [0.03, -0.026, 0.035], [0.03, 0.026, 0.065], "
@@ -89,10 +89,10 @@ TEST(PolygonScene, ErrorsNameFileLineKeyAndRange) {
       with_vertices("[[0, 0, 0.05], [0.01, 0, 0.05], [0.01, 0.01, 0.051], [0, 0.01, 0.05]]"),
       {"bad.toml:16", "walls[0].vertices", "is not flat", "off the polygon's best plane", allowed,
        "within 1e-6 of its size"});
-  expect_error(with_vertices(
-                   "[[0, 0, 0.05], [0.01, 0, 0.05], [0.005, 0.002, 0.05], [0.01, 0.01, 0.05], "
-                   "[0, 0.01, 0.05]]"),
-               {"bad.toml:16", "walls[0].vertices", "not convex", "vertex 3", allowed});
+  expect_error(
+      with_vertices("[[0, 0, 0.05], [0.01, 0, 0.05], [0.005, 0.002, 0.05], [0.01, 0.01, 0.05], "
+                    "[0, 0.01, 0.05]]"),
+      {"bad.toml:16", "walls[0].vertices", "not convex", "vertex 3", allowed});
   expect_error(with_vertices("[[0, 0, 0.05], [0.01, 0, 0.05], [0, 0.01]]"),
                {"bad.toml:16", "walls[0].vertices", "point 3 that is not three numbers"});
   expect_error(with_vertices("[0, 0, 0.05]"), {"bad.toml:16", "walls[0].vertices", "point 1"});

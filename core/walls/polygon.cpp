@@ -39,11 +39,10 @@ std::string number(double x) {
 
 std::string PolygonWall::problem(const std::vector<Vec3>& vertices) {
   const std::size_t n = vertices.size();
-  if (n < 3)
-    return "has " + std::to_string(n) + " vertices; a polygon needs at least 3";
+  if (n < 3) return "has " + std::to_string(n) + " vertices; a polygon needs at least 3";
   for (std::size_t k = 0; k < n; ++k)
-    if (!vertices[k].allFinite()) return "has a vertex that is not finite (vertex " +
-                                         std::to_string(k + 1) + ")";
+    if (!vertices[k].allFinite())
+      return "has a vertex that is not finite (vertex " + std::to_string(k + 1) + ")";
   const Vec3 centre = mean(vertices);
   double size = 0.0;
   for (const Vec3& p : vertices) size = std::max(size, (p - centre).norm());
@@ -103,8 +102,8 @@ PolygonWall::PolygonWall(std::vector<Vec3> vertices) {
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3 along = vertices_[(k + 1) % n] - vertices_[k];
     const Vec3 direction = along.normalized();
-    edges_.push_back(Edge{vertices_[k], direction, direction.cross(normal_).normalized(),
-                          along.norm()});
+    edges_.push_back(
+        Edge{vertices_[k], direction, direction.cross(normal_).normalized(), along.norm()});
   }
 }
 
@@ -167,9 +166,8 @@ void PolygonWall::validate(const std::string& name, const Vec3& /*gravity*/,
     for (const Vec3& p : low) {
       Vec3 moved = p;
       moved[k] += period;
-      strip = strip && std::any_of(high.begin(), high.end(), [&](const Vec3& q) {
-                return (q - moved).norm() <= tolerance;
-              });
+      strip = strip && std::any_of(high.begin(), high.end(),
+                                   [&](const Vec3& q) { return (q - moved).norm() <= tolerance; });
     }
     if (!strip) {
       const std::string axis(1, "xyz"[k]);
@@ -177,8 +175,9 @@ void PolygonWall::validate(const std::string& name, const Vec3& /*gravity*/,
           "wall '" + name + "': " + axis +
           " is periodic, and particles see a wall only in the domain's own copy, so a polygon "
           "must be a strip across the period: its plane parallel to " +
-          axis + ", every vertex on the face " + axis + " = " + number(lo) + " or " + axis +
-          " = " + number(hi) + " m, those on the upper face the lower face's moved by the "
+          axis + ", every vertex on the face " + axis + " = " + number(lo) + " or " + axis + " = " +
+          number(hi) +
+          " m, those on the upper face the lower face's moved by the "
           "period (make " +
           axis + " walled to place a polygon freely)");
     }
@@ -188,8 +187,8 @@ void PolygonWall::validate(const std::string& name, const Vec3& /*gravity*/,
 std::string PolygonWall::description() const {
   std::ostringstream out;
   out << "polygon of " << vertices_.size() << " vertices, area " << area_ << " m^2, normal ("
-      << normal_.x() << ", " << normal_.y() << ", " << normal_.z() << "), centre ("
-      << centre_.x() << ", " << centre_.y() << ", " << centre_.z() << ")";
+      << normal_.x() << ", " << normal_.y() << ", " << normal_.z() << "), centre (" << centre_.x()
+      << ", " << centre_.y() << ", " << centre_.z() << ")";
   return out.str();
 }
 

@@ -100,10 +100,10 @@ class PolygonWall {
  private:
   /// An edge from vertex k to vertex k + 1.
   struct Edge {
-    Vec3 start;       ///< vertex k, m
-    Vec3 direction;   ///< unit, towards vertex k + 1
-    Vec3 outward;     ///< unit, in the plane, pointing away from the polygon
-    double length;    ///< m
+    Vec3 start;      ///< vertex k, m
+    Vec3 direction;  ///< unit, towards vertex k + 1
+    Vec3 outward;    ///< unit, in the plane, pointing away from the polygon
+    double length;   ///< m
   };
   std::vector<Vec3> vertices_;
   std::vector<Edge> edges_;

@@ -118,6 +118,25 @@ double PolygonWall::ballistic_contact_time(const Vec3& r, const Vec3& v, double 
       return std::abs(x.at(s).norm() - c.distance) <= tolerance;
     };
   };
+  // Every feature lies in the plane, so nothing is touched while the centre stays more than a
+  // from it: s h(s) = |h0| + p1 s + p2 s^2 (s the side now). Where it has a lowest value for
+  // s >= 0 (p2 > 0, or p2 = 0 moving away) above a by more than round-off, no contact.
+  const double h0 = (r - centre_).dot(normal_);
+  const double side = h0 >= 0.0 ? 1.0 : -1.0;
+  const double p1 = side * v.dot(normal_), p2 = side * half_g.dot(normal_);
+  if (p2 > 0.0 || (p2 == 0.0 && p1 >= 0.0)) {
+    const double lowest_at = p2 > 0.0 ? std::max(0.0, -p1 / (2.0 * p2)) : 0.0;
+    const double lowest = std::abs(h0) + lowest_at * (p1 + lowest_at * p2);
+    const double round_off =
+        kSameDistance * (lengths + lowest_at * (std::abs(p1) + lowest_at * p2));
+    if (lowest - a > round_off) return kNever;
+  }
+  // Nor while the centre stays outside the ball about the plate's centre that holds the plate
+  // with a margin a (and 1e-9 of it for round-off): one quartic instead of 2n + 1.
+  const double reach = (size_ + a) * (1.0 + 1e-9);
+  if ((r - centre_).norm() > reach && feature_contact(Track{r - centre_, v, half_g}, reach, kNever,
+                                                      [](double) { return true; }) == kNever)
+    return kNever;
   double best = kNever;
   auto consider = [&](const Track& x) {
     if (best == 0.0) return;
@@ -129,7 +148,7 @@ double PolygonWall::ballistic_contact_time(const Vec3& r, const Vec3& v, double 
   for (const Edge& e : edges_) {
     const Vec3& t = e.direction;
     consider(Track{across(r - e.start, t), across(v, t), across(half_g, t)});  // its line
-    consider(Track{r - e.start, v, half_g});                                    // its start
+    consider(Track{r - e.start, v, half_g});                                   // its start
   }
   return best;
 }

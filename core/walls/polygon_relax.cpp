@@ -22,8 +22,7 @@
 namespace carom {
 
 RelaxContactSearch PolygonWall::relax_contact_search(const Vec3& r, const Vec3& v, double a,
-                                                     const RelaxFlight& f,
-                                                     double horizon) const {
+                                                     const RelaxFlight& f, double horizon) const {
   using contact_search::kEpsilon;
   using contact_search::kTouchingTolerance;
   using contact_search::Probe;
@@ -37,18 +36,15 @@ RelaxContactSearch PolygonWall::relax_contact_search(const Vec3& r, const Vec3& 
     const double round_off = 4.0 * kEpsilon * (length + p.displacement.norm());
     const double tolerance = kTouchingTolerance * a + round_off;
     if (!(c.distance > 0.0)) return Probe{-a, -1.0, 0.0, 0.0, 0.0, tolerance};  // in the plate
-    const Vec3 n = c.feature >= 0                               ? Vec3((position - c.point).normalized())
+    const Vec3 n = c.feature >= 0 ? Vec3((position - c.point).normalized())
                    : (position - centre_).dot(normal_) >= 0.0 ? normal_
                                                               : Vec3(-normal_);
     const Vec3 acceleration = f.acceleration(p.velocity);
     const double A = acceleration.norm();
     const double V = std::max(p.velocity.norm(), end_speed);
-    return Probe{c.distance - a,
-                 n.dot(p.velocity),
-                 A,
-                 n.dot(acceleration),
-                 V * A / (0.999 * a) + f.rate * A,
-                 tolerance};
+    return Probe{
+        c.distance - a, n.dot(p.velocity), A, n.dot(acceleration), V * A / (0.999 * a) + f.rate * A,
+        tolerance};
   };
   return contact_search::earliest_contact(probe_at, horizon);
 }

@@ -95,11 +95,13 @@ void read_polygon(TableReader& w, const std::string& name, Scene& scene) {
   const std::vector<Vec3> vertices = w.required_vector3_list(
       "vertices", 3, Range::any("the corners of a flat convex polygon, in order around it, m"));
   if (const std::string why = PolygonWall::problem(vertices); !why.empty())
-    w.fail("vertices", why + " (allowed: at least 3 distinct points, in order around a convex "
-                             "polygon of non-zero area, on one plane within 1e-6 of its size)");
+    w.fail("vertices", why +
+                           " (allowed: at least 3 distinct points, in order around a convex "
+                           "polygon of non-zero area, on one plane within 1e-6 of its size)");
   Wall wall = Wall::polygon(name, vertices);
   try {
-    std::get<PolygonWall>(wall.shape).validate(name, scene.system.flight.gravity, scene.system.domain);
+    std::get<PolygonWall>(wall.shape)
+        .validate(name, scene.system.flight.gravity, scene.system.domain);
   } catch (const std::invalid_argument& e) {
     w.fail("vertices", std::string("does not fit the domain: ") + e.what());
   }

@@ -71,8 +71,8 @@ class PolygonWall {
   /// flight under gravity g (any direction) touches the plate while approaching it; kNever if
   /// it does not (or only after 1e12 s). Each feature's contact condition is a polynomial of
   /// degree 4 in s (2 without gravity); its earliest root at which that feature holds the
-  /// closest point is taken (walls/polygon.cpp). As for the other shapes: a sphere at or past
-  /// contact (round-off) and approaching returns 0; one moving away returns its next contact,
+  /// closest point is taken (walls/polygon_ballistic.cpp). As for the other shapes: a sphere at or
+  /// past contact (round-off) and approaching returns 0; one moving away returns its next contact,
   /// or, if it turns back before it is clear, the time it turns.
   double ballistic_contact_time(const Vec3& r, const Vec3& v, double a, const Vec3& g) const;
 

@@ -119,8 +119,9 @@ double PolygonWall::ballistic_contact_time(const Vec3& r, const Vec3& v, double 
     };
   };
   // Every feature lies in the plane, so nothing is touched while the centre stays more than a
-  // from it: s h(s) = |h0| + p1 s + p2 s^2 (s the side now). Where it has a lowest value for
-  // s >= 0 (p2 > 0, or p2 = 0 moving away) above a by more than round-off, no contact.
+  // from it: side * h(s) = |h0| + p1 s + p2 s^2 (side: +-1, the side now). Where that has a
+  // lowest value for s >= 0 (p2 > 0, or p2 = 0 moving away) above a by more than round-off,
+  // no contact.
   const double h0 = (r - centre_).dot(normal_);
   const double side = h0 >= 0.0 ? 1.0 : -1.0;
   const double p1 = side * v.dot(normal_), p2 = side * half_g.dot(normal_);

@@ -2,7 +2,7 @@
 /// Fixed boundaries: a closed set of shapes (core/walls/), each shape-dependent operation a visit
 /// over them, so that a new shape is one file and the compiler names every operation it lacks.
 /// Shapes: infinite planes of any orientation, the inside of a vertical cylinder, the inside of
-/// a vertical cone.
+/// a vertical cone, finite convex polygons (two-sided plates).
 #include <string>
 #include <variant>
 #include <vector>
@@ -13,11 +13,12 @@
 #include "walls/cone.hpp"
 #include "walls/cylinder.hpp"
 #include "walls/plane.hpp"
+#include "walls/polygon.hpp"
 
 namespace carom {
 
 /// The geometry of a wall: one of the shapes of core/walls/.
-using WallShape = std::variant<PlaneWall, CylinderWall, ConeWall>;
+using WallShape = std::variant<PlaneWall, CylinderWall, ConeWall, PolygonWall>;
 
 /// A wall is a sphere of infinite mass and radius for the collision law.
 struct Wall {
@@ -39,6 +40,12 @@ struct Wall {
                    double radius_bottom, double z_top, double radius_top) {
     return Wall{std::move(label),
                 ConeWall(axis_x, axis_y, z_bottom, radius_bottom, z_top, radius_top)};
+  }
+
+  /// The two-sided convex plate through `vertices` (m, in order around it; see
+  /// walls/polygon.hpp). Throws std::invalid_argument when they are not a convex polygon.
+  static Wall polygon(std::string label, std::vector<Vec3> vertices) {
+    return Wall{std::move(label), PolygonWall(std::move(vertices))};
   }
 
   /// Gap between a sphere (centre r, radius a) and the wall surface: > 0 when apart, m.
@@ -75,7 +82,8 @@ inline double relax_wall_contact(const Wall& wall, const Vec3& r, const Vec3& v,
 
 /// Throws std::invalid_argument (naming the wall) when a wall cannot be simulated under this
 /// gravity (m/s^2) in this domain: a cylinder or a cone needs gravity along its axis (z), a
-/// cone a walled z axis and its apex outside the domain.
+/// cone a walled z axis and its apex outside the domain, a polygon on a periodic axis must be
+/// a strip across the period.
 inline void validate_walls(const std::vector<Wall>& walls, const Vec3& gravity,
                            const Domain& domain) {
   for (const Wall& wall : walls)

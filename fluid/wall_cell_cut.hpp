@@ -7,7 +7,7 @@
 ///   2. cut_cell: oblique planes that cut the clipped box are collected as half-spaces (the box
 ///      is then clipped by all of them at once), or mark the cell as wholly outside;
 ///   3. inside_fraction: the fraction of the clipped box inside a curved wall (a cylinder, a
-///      cone), which multiplies the volume; 1 for planes.
+///      cone), which multiplies the volume; 1 for planes and polygons.
 /// The passes run in this order whatever the order of the walls.
 #include <vector>
 
@@ -34,6 +34,8 @@ void clip_cell(const PlaneWall& wall, CellCut& cell);
 inline void clip_cell(const CylinderWall& /*wall*/, CellCut& /*cell*/) {}
 /// Pass 1: a cone does not clip the box.
 inline void clip_cell(const ConeWall& /*wall*/, CellCut& /*cell*/) {}
+/// Pass 1: a polygon (a plate of zero thickness) does not clip the box.
+inline void clip_cell(const PolygonWall& /*wall*/, CellCut& /*cell*/) {}
 
 /// Pass 2: an oblique plane wholly past the box marks it outside; one through it is collected.
 void cut_cell(const PlaneWall& wall, CellCut& cell);
@@ -41,6 +43,8 @@ void cut_cell(const PlaneWall& wall, CellCut& cell);
 inline void cut_cell(const CylinderWall& /*wall*/, CellCut& /*cell*/) {}
 /// Pass 2: a cone is no half-space.
 inline void cut_cell(const ConeWall& /*wall*/, CellCut& /*cell*/) {}
+/// Pass 2: a polygon is no half-space.
+inline void cut_cell(const PolygonWall& /*wall*/, CellCut& /*cell*/) {}
 
 /// Pass 3: a plane has been applied by passes 1 and 2: fraction 1.
 inline double inside_fraction(const PlaneWall& /*wall*/, const CellCut& /*cell*/) {
@@ -55,5 +59,11 @@ double inside_fraction(const CylinderWall& wall, const CellCut& cell);
 /// (there the area has a (R - R_c)^{3/2} kink, removed by a substitution); to about 1e-13 of
 /// the box volume.
 double inside_fraction(const ConeWall& wall, const CellCut& cell);
+/// Pass 3: a polygon is a plate of zero thickness with particles on both sides: it takes no
+/// volume from the cell, fraction 1 (the gas does not see it: it neither blocks nor guides the
+/// flow).
+inline double inside_fraction(const PolygonWall& /*wall*/, const CellCut& /*cell*/) {
+  return 1.0;
+}
 
 }  // namespace carom

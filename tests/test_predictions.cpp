@@ -94,6 +94,8 @@ struct Oracle {
               std::hypot(v.x(), v.y())) /
              cone.secant();
     }
+    // gap = distance to the plate - a, 1-Lipschitz in the centre: |gap'| <= |v(s)|.
+    double operator()(const PolygonWall&) const { return v.norm() + g.norm() * horizon; }
   };
   double wall_rate_bound(std::size_t i, std::size_t w) const {
     return std::visit(WallRateBound{v0[i], sim.system().flight.gravity, horizon},

@@ -212,6 +212,45 @@ Vec3 TableReader::required_vector3(std::string_view key, const Range& range) {
   return vector3(key, Vec3::Zero(), range);
 }
 
+std::vector<Vec3> TableReader::required_vector3_list(std::string_view key, std::size_t least,
+                                                     const Range& range) {
+  const std::string expected = "an array of at least " + std::to_string(least) +
+                               " points [x, y, z] (" + range.meaning + ", each number in " +
+                               range.describe() + ")";
+  const toml::node* n = node(key);
+  if (!n) fail(key, "is missing (" + expected + ")");
+  const auto* a = n->as_array();
+  if (!a) fail(key, "is not " + expected);
+  std::vector<Vec3> out;
+  for (const toml::node& entry : *a) {
+    const std::string which = "point " + std::to_string(out.size() + 1);
+    const auto* point = entry.as_array();
+    if (!point || point->size() != 3)
+      fail(key, "has " + which + " that is not three numbers (" + expected + ")");
+    Vec3 v;
+    for (int k = 0; k < 3; ++k) {
+      const toml::node& c = *point->get(static_cast<std::size_t>(k));
+      double x;
+      if (const auto* f = c.as_floating_point())
+        x = f->get();
+      else if (const auto* i = c.as_integer())
+        x = static_cast<double>(i->get());
+      else
+        fail(key, "has " + which + " with a component that is not a number (" + expected + ")");
+      if (!std::isfinite(x) || !range.contains(x))
+        fail(key, "has " + which + " with component " + std::string(1, "xyz"[k]) + " = " +
+                      format_number(x) + " outside the allowed range " + range.describe() + " (" +
+                      range.meaning + ")");
+      v[k] = x;
+    }
+    out.push_back(v);
+  }
+  if (out.size() < least)
+    fail(key, "has " + std::to_string(out.size()) + " points; at least " + std::to_string(least) +
+                  " are needed (" + expected + ")");
+  return out;
+}
+
 std::vector<double> TableReader::numbers(std::string_view key, const Range& range) {
   std::vector<double> out;
   const toml::node* n = node(key);

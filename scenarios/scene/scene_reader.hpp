@@ -98,6 +98,10 @@ class TableReader {
   /// Three numbers, each in `range`.
   Vec3 vector3(std::string_view key, const Vec3& fallback, const Range& range);
   Vec3 required_vector3(std::string_view key, const Range& range);
+  /// An array of points, each three numbers in `range` (`key = [[x, y, z], ...]`); it must be
+  /// present and hold at least `least` of them.
+  std::vector<Vec3> required_vector3_list(std::string_view key, std::size_t least,
+                                          const Range& range);
   /// An array of strings.
   std::vector<std::string> strings(std::string_view key);
   /// An array of numbers, each in `range` (empty when absent).

@@ -4,7 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 namespace carom {
 
@@ -87,6 +91,23 @@ void read_cone(TableReader& w, const std::string& name, Scene& scene) {
   scene.system.walls.push_back(Wall{name, cone});
 }
 
+void read_polygon(TableReader& w, const std::string& name, Scene& scene) {
+  const std::vector<Vec3> vertices = w.required_vector3_list(
+      "vertices", 3, Range::any("the corners of a flat convex polygon, in order around it, m"));
+  if (const std::string why = PolygonWall::problem(vertices); !why.empty())
+    w.fail("vertices", why +
+                           " (allowed: at least 3 distinct points, in order around a convex "
+                           "polygon of non-zero area, on one plane within 1e-6 of its size)");
+  Wall wall = Wall::polygon(name, vertices);
+  try {
+    std::get<PolygonWall>(wall.shape)
+        .validate(name, scene.system.flight.gravity, scene.system.domain);
+  } catch (const std::invalid_argument& e) {
+    w.fail("vertices", std::string("does not fit the domain: ") + e.what());
+  }
+  scene.system.walls.push_back(std::move(wall));
+}
+
 }  // namespace
 
 void read_walls(TableReader& root, Scene& scene) {
@@ -109,7 +130,7 @@ void read_walls(TableReader& root, Scene& scene) {
     for (const Wall& other : scene.system.walls)
       if (other.name == name)
         w.fail("name", "is already the name of a wall (box walls are x_low, x_high, y_low, ...)");
-    const std::string type = w.required_string("type", {"plane", "cylinder", "cone"});
+    const std::string type = w.required_string("type", {"plane", "cylinder", "cone", "polygon"});
     if (type == "plane") {
       const Vec3 point = w.required_vector3("point", Range::any("a point on the plane, m"));
       const Vec3 normal =
@@ -121,8 +142,10 @@ void read_walls(TableReader& root, Scene& scene) {
           "axis", Range::any("a point on the cylinder's axis (along z); z is ignored, m"));
       const double radius = w.number("radius", Range::positive("inner radius of the cylinder, m"));
       scene.system.walls.push_back(Wall::cylinder(name, axis.x(), axis.y(), radius));
-    } else {
+    } else if (type == "cone") {
       read_cone(w, name, scene);
+    } else {
+      read_polygon(w, name, scene);
     }
     w.finish();
   }

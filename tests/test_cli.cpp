@@ -88,6 +88,12 @@ TEST_F(Cli, CheckShippedScenes) {
   EXPECT_EQ(carom("check '" + kScenes + "/fluidized_bed.toml'"), 0);
   EXPECT_NE(out_.find("gas coupling: two-way"), std::string::npos) << out_;
   EXPECT_NE(out_.find("U_mf"), std::string::npos) << out_;
+  // The scenes that start empty and fill through an inflow: check lists the inflow and outflow.
+  for (const char* name : {"duct_flow", "convergent_duct"}) {
+    EXPECT_EQ(carom("check '" + kScenes + "/" + name + ".toml'"), 0) << name << ": " << out_;
+    EXPECT_NE(out_.find("inflow \"feed\": glass at"), std::string::npos) << out_;
+    EXPECT_NE(out_.find("outflow \"exit\": centres below z"), std::string::npos) << out_;
+  }
   EXPECT_TRUE(fs::is_empty(dir_)) << "check must write nothing";
 }
 

@@ -82,7 +82,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
                                            ShippedScene{"settling_sphere.toml", 1}, ShippedScene{"packed_bed.toml", 1345},
                                            ShippedScene{"fluidized_bed.toml", 400}, ShippedScene{"column_1d.toml", 300},
                                            ShippedScene{"bubbling_bed.toml", 2000}, ShippedScene{"fines_bed.toml", 3207},
-                                           ShippedScene{"hopper.toml", 200}),
+                                           ShippedScene{"hopper.toml", 200}, ShippedScene{"duct_flow.toml", 0},
+                                           ShippedScene{"convergent_duct.toml", 0}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));

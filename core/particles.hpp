@@ -42,41 +42,38 @@ struct ParticleStore {
     id.push_back(particle_id);
   }
 
+  /// Calls f(column, others' same column...) for every per-particle array of this store: the
+  /// one list of the columns, which erase, append, permute and pop_back go through.
+  template <class F, class... Others>
+  void for_each_column(F&& f, Others&&... others) {
+    f(position, others.position...);
+    f(velocity, others.velocity...);
+    f(clock, others.clock...);
+    f(radius, others.radius...);
+    f(spin, others.spin...);
+    f(mass, others.mass...);
+    f(inertia, others.inertia...);
+    f(species, others.species...);
+    f(id, others.id...);
+  }
+
   /// Removes the last particle.
   void pop_back() {
-    position.pop_back(); velocity.pop_back(); clock.pop_back(); radius.pop_back();
-    spin.pop_back(); mass.pop_back(); inertia.pop_back();
-    species.pop_back(); id.pop_back();
+    for_each_column([](auto& column) { column.pop_back(); });
   }
 
   /// Removes the particles at `indices` (ascending, each once); the others keep their order.
   void erase(const std::vector<std::size_t>& indices) {
-    auto apply = [&](auto& column) { erase_indices(column, indices); };
-    apply(position);
-    apply(velocity);
-    apply(clock);
-    apply(radius);
-    apply(spin);
-    apply(mass);
-    apply(inertia);
-    apply(species);
-    apply(id);
+    for_each_column([&](auto& column) { erase_indices(column, indices); });
   }
 
   /// Appends every particle of `other`, in its order.
   void append(const ParticleStore& other) {
-    auto apply = [](auto& column, const auto& more) {
-      column.insert(column.end(), more.begin(), more.end());
-    };
-    apply(position, other.position);
-    apply(velocity, other.velocity);
-    apply(clock, other.clock);
-    apply(radius, other.radius);
-    apply(spin, other.spin);
-    apply(mass, other.mass);
-    apply(inertia, other.inertia);
-    apply(species, other.species);
-    apply(id, other.id);
+    for_each_column(
+        [](auto& column, const auto& added) {
+          column.insert(column.end(), added.begin(), added.end());
+        },
+        other);
   }
 
   /// Removes the entries at `indices` (ascending, each once) from `column`, keeping the order of
@@ -97,19 +94,10 @@ struct ParticleStore {
 
   /// Reorders every array so that new particle k is old particle order[k].
   void permute(const std::vector<std::size_t>& order) {
-    auto apply = [&](auto& column) {
+    for_each_column([&](auto& column) {
       auto old = column;
       for (std::size_t k = 0; k < order.size(); ++k) column[k] = old[order[k]];
-    };
-    apply(position);
-    apply(velocity);
-    apply(clock);
-    apply(radius);
-    apply(spin);
-    apply(mass);
-    apply(inertia);
-    apply(species);
-    apply(id);
+    });
   }
 };
 

@@ -102,6 +102,27 @@ TEST(Determinism, RestoreRefusesACellOutsideTheGrid) {
     }
 }
 
+// A damaged checkpoint whose species index lies beyond the scene's species (the fuzzer's find:
+// the restore read past the species list), or whose counters are sized for other species, is
+// refused with what is wrong.
+TEST(Determinism, RestoreRefusesASpeciesBeyondTheScene) {
+  const System system = rough_mixture();
+  EventDrivenEngine sim(system);
+  sim.run_until(0.5);
+  const EngineState saved = sim.state();
+  EngineState damaged = saved;
+  damaged.particles.species[5] = static_cast<std::uint32_t>(system.species.size());
+  try {
+    EventDrivenEngine restored(system, EventDrivenOptions{}, damaged);
+    ADD_FAILURE() << "a species index beyond the scene was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("has species index"), std::string::npos) << e.what();
+  }
+  damaged = saved;
+  damaged.statistics.resize(system.species.size() + 1, system.walls.size());
+  EXPECT_THROW(EventDrivenEngine(system, EventDrivenOptions{}, damaged), std::invalid_argument);
+}
+
 // The same with walls, gravity and the TC model (a slab one grid cell high).
 TEST(Determinism, RestoredStateContinuesBitForBitWithWallsAndGravity) {
   test::expect_finishes(20, [] {

@@ -94,6 +94,22 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
       state.stall_window_start.size() != n || state.event_counters.size() != n ||
       state.last_collision.size() != n)
     throw std::invalid_argument("saved state: the arrays do not all hold one entry per particle");
+  // A damaged checkpoint's species index would read past the species list, and counters sized
+  // for other species or walls past their tables (found by fuzzing).
+  for (std::size_t i = 0; i < n; ++i)
+    if (system_.particles.species[i] >= system_.species.size())
+      throw std::invalid_argument("saved state: particle " +
+                                  std::to_string(system_.particles.id[i]) + " has species index " +
+                                  std::to_string(system_.particles.species[i]) +
+                                  ", but the scene has " + std::to_string(system_.species.size()) +
+                                  " species: the checkpoint is damaged");
+  if (state.statistics.species_count != system_.species.size() ||
+      state.statistics.wall_count != system_.walls.size())
+    throw std::invalid_argument("saved state: the collision counters are for " +
+                                std::to_string(state.statistics.species_count) + " species and " +
+                                std::to_string(state.statistics.wall_count) +
+                                " walls, the scene has " + std::to_string(system_.species.size()) +
+                                " and " + std::to_string(system_.walls.size()));
   grid_ = HierarchicalGrid(system_.domain, system_.particles.radius, options_.grid_level_ratio,
                            options_.grid_subdivision);
   // Rebuild every cell's list in its saved order: each insertion goes first, so the last place first.

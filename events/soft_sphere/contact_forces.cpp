@@ -93,10 +93,12 @@ ContactForce contact_force(const PairContact& c, const Vec3& n, double delta, co
 
 }  // namespace
 
-void SoftSphereEngine::compute_forces(double dt) {
+void SoftSphereEngine::compute_forces(double dt, bool clear) {
   ParticleStore& p = system_.particles;
-  std::fill(force_.begin(), force_.end(), Vec3::Zero());
-  std::fill(torque_.begin(), torque_.end(), Vec3::Zero());
+  if (clear) {
+    std::fill(force_.begin(), force_.end(), Vec3::Zero());
+    std::fill(torque_.begin(), torque_.end(), Vec3::Zero());
+  }
   const std::size_t S = system_.species.size(), W = system_.walls.size();
   double elastic = 0.0, dissipated = 0.0;
   lossy_.clear();

@@ -27,7 +27,7 @@ SoftSphereEngine::SoftSphereEngine(System system, SoftSphereOptions options)
   flights_.assign(system_.particles.size(), RelaxFlight{0.0, system_.flight.gravity});
   hold_fixed_particles();
   list_.build(system_.particles.position, system_.particles.radius, system_.walls);
-  compute_forces(0.0);
+  compute_forces(0.0, true);
   const Energies e = energies();
   energy_start_ = e.total();
   energy_scale_ = e.translational + e.rotational + e.elastic;
@@ -150,26 +150,43 @@ void SoftSphereEngine::setup() {
 }
 
 void SoftSphereEngine::sort_particles() {
-  // Neighbours in space become neighbours in memory: the force loop then reads particles that
-  // share cache lines. Cells of about two largest diameters, in z, y, x order; ties keep the
-  // given order, so the result is deterministic. (Once, here: particle indices stay fixed for
-  // the method's life, as the interface promises; ids are unchanged.)
+  // Neighbours in space become neighbours in memory: the force loop then finds a particle's
+  // partners in cache. Cells of about one largest diameter, ordered along a Morton (Z-order)
+  // curve: a pair's partner sits within a few hundred entries of its owner in most cases,
+  // where a row-by-row order puts the next layer of cells a whole layer's particles away (at
+  // 100 000 particles that layer, with its velocities and forces, outgrew the 1 MB L2 cache:
+  // 96 ns per particle-step against 61 at 10 000). Ties keep the given order, so the result is
+  // deterministic. (Once, here: particle indices stay fixed for the method's life, as the
+  // interface promises; ids are unchanged.)
   ParticleStore& p = system_.particles;
   const std::size_t n = p.size();
   if (n < 2) return;
   double largest = 0.0;
   for (double a : p.radius) largest = std::max(largest, a);
   const Domain& d = system_.domain;
+  constexpr std::int64_t kMaxCells = std::int64_t{1} << 21;  // 21 bits per axis in a 64-bit key
   std::array<std::int64_t, 3> cells{};
   for (int k = 0; k < 3; ++k)
-    cells[k] = std::max<std::int64_t>(1, static_cast<std::int64_t>(d.length()[k] / (4.0 * largest)));
-  std::vector<std::int64_t> key(n);
+    cells[k] = std::clamp<std::int64_t>(static_cast<std::int64_t>(d.length()[k] / (2.0 * largest)),
+                                        1, kMaxCells);
+  // Spreads the 21 low bits of v to every third bit.
+  auto spread = [](std::uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffff;
+    v = (v | v << 16) & 0x1f0000ff0000ff;
+    v = (v | v << 8) & 0x100f00f00f00f00f;
+    v = (v | v << 4) & 0x10c30c30c30c30c3;
+    v = (v | v << 2) & 0x1249249249249249;
+    return v;
+  };
+  std::vector<std::uint64_t> key(n);
   for (std::size_t i = 0; i < n; ++i) {
-    std::array<std::int64_t, 3> c{};
+    std::array<std::uint64_t, 3> c{};
     for (int k = 0; k < 3; ++k)
-      c[k] = std::clamp<std::int64_t>(
-          static_cast<std::int64_t>((p.position[i][k] - d.lower[k]) / d.length()[k] * cells[k]), 0, cells[k] - 1);
-    key[i] = (c[2] * cells[1] + c[1]) * cells[0] + c[0];
+      c[k] = static_cast<std::uint64_t>(std::clamp<std::int64_t>(
+          static_cast<std::int64_t>((p.position[i][k] - d.lower[k]) / d.length()[k] * cells[k]), 0,
+          cells[k] - 1));
+    key[i] = spread(c[0]) | spread(c[1]) << 1 | spread(c[2]) << 2;
   }
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
@@ -273,50 +290,24 @@ void SoftSphereEngine::tag_bodies(const std::vector<std::uint64_t>& ids) {
   CollisionMethod::tag_bodies(ids);
   // Before the first step the forces of t = 0 are computed again with the bodies tagged: with
   // dt = 0 that changes no spring, counter or energy (contacts of t = 0 are already begun).
-  if (steps_ == 0 && statistics_.tagged.any()) compute_forces(0.0);
+  if (steps_ == 0 && statistics_.tagged.any()) compute_forces(0.0, true);
 }
 
-void SoftSphereEngine::half_kick(double dt) {
+template <bool kDrift>
+double SoftSphereEngine::half_kick(double dt) {
+  // kDrift: the step's first half kick, the drift and the clearing of the forces in one pass
+  // over the particles (each particle's arithmetic is that of three passes, in the same order;
+  // one pass reads and writes its arrays once, which at 1e5 particles no longer fit the cache).
+  // Returns the largest squared speed of the drift (0 without it).
   ParticleStore& p = system_.particles;
   const double h = 0.5 * dt;
   if (statistics_.tagged.any()) statistics_.tagged.book_half_step(h);
   const Vec3 g = system_.flight.gravity;
   const std::size_t n = p.size();
-  if (!gas_forces_) {  // gravity alone (no fluid step yet): no drag, no gas work
-    const Vec3 kick = h * g;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double inv_m = inverse_mass_[i];
-      if (inv_m == 0.0) continue;
-      p.velocity[i] += (h * inv_m) * force_[i] + kick;
-      p.spin[i] += (h * inverse_inertia_[i]) * torque_[i];
-    }
-    return;
-  }
-  double work = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (inverse_mass_[i] == 0.0) continue;
-    const Vec3 v0 = p.velocity[i];
-    const Vec3 body = flights_[i].acceleration(v0);
-    const Vec3 v1 = v0 + h * (force_[i] * inverse_mass_[i] + body);
-    // The gas force m (a - g) times the mean velocity over the half step.
-    work += p.mass[i] * (body - g).dot(v0 + v1) * (0.5 * h);
-    p.velocity[i] = v1;
-    p.spin[i] += h * inverse_inertia_[i] * torque_[i];
-  }
-  gas_work_ += work;
-}
-
-void SoftSphereEngine::step(double dt) {
-  ParticleStore& p = system_.particles;
-  half_kick(dt);
   const Domain& d = system_.domain;
-  // The list stays valid while no particle can have moved half the skin since it was built:
-  // every step moves each particle by its half-step velocity times dt, so the sum over the
-  // steps of the largest such displacement bounds them all (cheaper than comparing each
-  // position with its reference, and never later than that test would rebuild).
   double fastest2 = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (inverse_mass_[i] == 0.0) continue;
+  // The drift of particle i by its half-step velocity, wrapped into a periodic box.
+  auto drift = [&](std::size_t i) {
     Vec3& r = p.position[i];
     const Vec3& v = p.velocity[i];
     r += dt * v;
@@ -324,17 +315,57 @@ void SoftSphereEngine::step(double dt) {
     for (int k = 0; k < 3; ++k) {
       if (!d.periodic[k]) continue;
       const double length = d.upper[k] - d.lower[k];
-      if (r[k] >= d.upper[k]) r[k] -= length;
-      else if (r[k] < d.lower[k]) r[k] += length;
+      if (r[k] >= d.upper[k])
+        r[k] -= length;
+      else if (r[k] < d.lower[k])
+        r[k] += length;
     }
+  };
+  if (!gas_forces_) {  // gravity alone (no fluid step yet): no drag, no gas work
+    const Vec3 kick = h * g;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double inv_m = inverse_mass_[i];
+      if (inv_m != 0.0) {
+        p.velocity[i] += (h * inv_m) * force_[i] + kick;
+        p.spin[i] += (h * inverse_inertia_[i]) * torque_[i];
+        if constexpr (kDrift) drift(i);
+      }
+      if constexpr (kDrift) force_[i] = torque_[i] = Vec3::Zero();
+    }
+    return fastest2;
   }
+  double work = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (inverse_mass_[i] != 0.0) {
+      const Vec3 v0 = p.velocity[i];
+      const Vec3 body = flights_[i].acceleration(v0);
+      const Vec3 v1 = v0 + h * (force_[i] * inverse_mass_[i] + body);
+      // The gas force m (a - g) times the mean velocity over the half step.
+      work += p.mass[i] * (body - g).dot(v0 + v1) * (0.5 * h);
+      p.velocity[i] = v1;
+      p.spin[i] += h * inverse_inertia_[i] * torque_[i];
+      if constexpr (kDrift) drift(i);
+    }
+    if constexpr (kDrift) force_[i] = torque_[i] = Vec3::Zero();
+  }
+  gas_work_ += work;
+  return fastest2;
+}
+
+void SoftSphereEngine::step(double dt) {
+  ParticleStore& p = system_.particles;
+  // The list stays valid while no particle can have moved half the skin since it was built:
+  // every step moves each particle by its half-step velocity times dt, so the sum over the
+  // steps of the largest such displacement bounds them all (cheaper than comparing each
+  // position with its reference, and never later than that test would rebuild).
+  const double fastest2 = half_kick<true>(dt);
   travelled_ += std::sqrt(fastest2) * dt;
   if (travelled_ > 0.5 * list_.skin() || list_.reference_positions().size() != p.size()) {
     list_.build(p.position, p.radius, system_.walls);
     travelled_ = 0.0;
   }
-  compute_forces(dt);
-  half_kick(dt);
+  compute_forces(dt, false);
+  half_kick<false>(dt);
   book_dissipation(dt);
   ++statistics_.events;
 }

@@ -100,10 +100,14 @@ class SoftSphereEngine final : public CollisionMethod {
   void setup();              // contacts, step, masses; throws std::invalid_argument
   void sort_particles();     // spatial order in memory (fresh runs)
   void step(double dt);      // one velocity-Verlet step
-  void half_kick(double dt); // v += dt/2 (F/m + a(v)), w += dt/2 T/I, books the gas work
+  /// v += dt/2 (F/m + a(v)), w += dt/2 T/I, books the gas work; kDrift: then r += dt v and
+  /// F = T = 0 (the step's first half), returning the largest squared speed, (m/s)^2.
+  template <bool kDrift>
+  double half_kick(double dt);
   /// Contact forces and torques at the current positions and velocities; the tangential springs
-  /// advance by dt (0: evaluate only). Books counters and dissipation; throws MethodFailure.
-  void compute_forces(double dt);
+  /// advance by dt (0: evaluate only). clear: first set every force and torque to zero (else
+  /// the caller has: half_kick<true>). Books counters and dissipation; throws MethodFailure.
+  void compute_forces(double dt, bool clear);
   /// Books the work of the lossy contact forces of this step with the end-of-step velocities.
   void book_dissipation(double dt);
   void fire_due_actions(double t);

@@ -52,7 +52,7 @@ void SoftSphereEngine::apply_change(const ParticleChange& change) {
   const double elastic_before = elastic_;
   list_.build(p.position, p.radius, system_.walls);
   travelled_ = 0.0;
-  compute_forces(0.0);
+  compute_forces(0.0, true);
   flow_energy_ -= elastic_before - elastic_;
 }
 

@@ -55,21 +55,26 @@ CellSort sort_into_cells(const Domain& d, double cell, const std::vector<Vec3>& 
   return g;
 }
 
-/// The cell indices along one axis within `reach` cells of `centre`, each once.
-void axis_range(int centre, int reach, int cells, bool periodic, std::vector<int>& out) {
+/// The cell indices along one axis within `reach` cells of `centre`, each once, as runs of
+/// consecutive cells [first, last] (a periodic axis wraps: two runs).
+void axis_runs(int centre, int reach, int cells, bool periodic,
+               std::vector<std::array<int, 2>>& out) {
   out.clear();
   if (periodic && 2 * reach + 1 >= cells) {
-    for (int c = 0; c < cells; ++c) out.push_back(c);
+    out.push_back({0, cells - 1});
     return;
   }
-  for (int o = -reach; o <= reach; ++o) {
-    int c = centre + o;
-    if (periodic) {
-      c = (c % cells + cells) % cells;
-    } else if (c < 0 || c >= cells) {
-      continue;
-    }
-    out.push_back(c);
+  int lo = centre - reach, hi = centre + reach;
+  if (!periodic) {
+    out.push_back({std::max(lo, 0), std::min(hi, cells - 1)});
+  } else if (lo < 0) {
+    out.push_back({lo + cells, cells - 1});
+    out.push_back({0, hi});
+  } else if (hi >= cells) {
+    out.push_back({lo, cells - 1});
+    out.push_back({0, hi - cells});
+  } else {
+    out.push_back({lo, hi});
   }
 }
 
@@ -81,33 +86,44 @@ void NeighbourList::build(const std::vector<Vec3>& position, const std::vector<d
   double smallest = n > 0 ? radius[0] : 1.0;
   for (double a : radius) smallest = std::min(smallest, a);
   const CellSort grid = sort_into_cells(domain_, 2.0 * smallest + skin_, position);
+  std::vector<CellEntry>& entries = entries_;
+  entries.resize(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::int32_t j = grid.sorted[s];
+    entries[s] = CellEntry{position[j], radius[j], j};
+  }
 
-  std::vector<PairContactState> fresh;
+  std::vector<PairContactState> fresh = std::move(spare_pairs_);
+  fresh.clear();
   fresh.reserve(pairs_.size() + n);
   std::vector<std::int32_t> found;
-  std::array<std::vector<int>, 3> range;
+  std::array<std::vector<std::array<int, 2>>, 3> runs;
   for (std::size_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::int32_t>(ii);
     const double a_i = radius[ii];
-    const auto home = grid.cell_of(domain_, position[ii]);
+    const Vec3 r_i = position[ii];
+    const auto home = grid.cell_of(domain_, r_i);
     for (int k = 0; k < 3; ++k) {
       const int reach = static_cast<int>(std::ceil((2.0 * a_i + skin_) / grid.size[k]));
-      axis_range(home[k], reach, grid.cells[k], domain_.periodic[k], range[k]);
+      axis_runs(home[k], reach, grid.cells[k], domain_.periodic[k], runs[k]);
     }
     found.clear();
-    for (int cz : range[2])
-      for (int cy : range[1])
-        for (int cx : range[0]) {
-          const int c = grid.flat({cx, cy, cz});
-          for (std::int32_t s = grid.start[c]; s < grid.start[c + 1]; ++s) {
-            const std::int32_t j = grid.sorted[s];
-            if (!owns(a_i, i, radius[j], j)) continue;
-            Vec3 d = position[ii] - position[j];
-            domain_.minimum_image(d);
-            const double reach = a_i + radius[j] + skin_;
-            if (d.squaredNorm() < reach * reach) found.push_back(j);
-          }
-        }
+    for (const auto& [z0, z1] : runs[2])
+      for (int cz = z0; cz <= z1; ++cz)
+        for (const auto& [y0, y1] : runs[1])
+          for (int cy = y0; cy <= y1; ++cy)
+            for (const auto& [x0, x1] : runs[0]) {
+              // Cells x0 ... x1 of this row: one stretch of the entries.
+              const std::int32_t end = grid.start[grid.flat({x1, cy, cz}) + 1];
+              for (std::int32_t s = grid.start[grid.flat({x0, cy, cz})]; s < end; ++s) {
+                const CellEntry& e = entries[s];
+                if (!owns(a_i, i, e.radius, e.index)) continue;
+                Vec3 d = r_i - e.position;
+                domain_.minimum_image(d);
+                const double reach = a_i + e.radius + skin_;
+                if (d.squaredNorm() < reach * reach) found.push_back(e.index);
+              }
+            }
     std::sort(found.begin(), found.end());
     for (std::int32_t j : found) fresh.push_back(PairContactState{i, j, false, 0.0, Vec3::Zero(), 0.0});
   }
@@ -120,6 +136,7 @@ void NeighbourList::build(const std::vector<Vec3>& position, const std::vector<d
     if (old < pairs_.size() && pairs_[old].owner == p.owner && pairs_[old].partner == p.partner)
       p = pairs_[old];
   }
+  spare_pairs_ = std::move(pairs_);
   pairs_ = std::move(fresh);
 
   std::vector<WallContactState> fresh_walls;

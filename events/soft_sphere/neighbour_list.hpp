@@ -82,6 +82,17 @@ class NeighbourList {
   std::vector<PairContactState> pairs_;
   std::vector<WallContactState> wall_pairs_;
   std::uint64_t builds_ = 0;
+  // Buffers kept from build to build, so that a build does not map fresh memory (at 1e5
+  // particles the new pair list cost more in page faults than in the search).
+  std::vector<PairContactState> spare_pairs_;
+  /// A particle as the search reads it, copied in cell order: the cells of a row along x are
+  /// one contiguous stretch of memory.
+  struct CellEntry {
+    Vec3 position;
+    double radius;
+    std::int32_t index;
+  };
+  std::vector<CellEntry> entries_;
 };
 
 /// True when particle j is listed under owner i: the larger, the lower index among equals.

@@ -12,6 +12,8 @@
   RUN_profiles.png (runs with [analysis.profiles]) across each section: the solid fraction,
                    the mean of the vertical and the cross velocity component with bands of one
                    standard deviation, and the mean spin about the third axis.
+  RUN_plugs.png    (runs with [analysis.plugs]) the axial solid fraction as a space-time
+                   diagram and the bed top against time (plug_plots.py).
 The fitted numbers come from summary.json beside the run file (its "analysis" object).
 """
 import json
@@ -231,4 +233,7 @@ def analysis_figures(run, run_path):
         figures.append(("collisions", lambda p, dpi: plot_collisions(run, run_path, p, dpi)))
     if "profile_sums" in series:
         figures.append(("profiles", lambda p, dpi: plot_profiles(run, run_path, p, dpi)))
+    if "axial_solid_fraction" in series and "analysis" in run and "plugs" in run["analysis"]:
+        from plug_plots import plot_plugs
+        figures.append(("plugs", lambda p, dpi: plot_plugs(run, read_summary(run_path), p, dpi)))
     return figures

@@ -219,7 +219,8 @@ void prepare_output_directory(const fs::path& dir, bool overwrite) {
                            "run_mixing.png",
                            "run_collisions.png",
                            "run_profiles.png",
-                           "run_flow.png"};
+                           "run_flow.png",
+                           "run_plugs.png"};
   std::error_code error;
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");

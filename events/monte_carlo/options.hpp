@@ -34,6 +34,11 @@ enum class PartnerModel {
   /// step) however few particles a cell holds. The partner's radius and mass stay the species'
   /// mean in the cell, as for Gaussian.
   CellParticle,
+  /// The cell's mean velocity and mean spin of the partner's species, without fluctuations
+  /// (the model "without partner velocity fluctuations" of the duct studies): the collision
+  /// frequency is then pi (R1 + R0)^2 n |V1 - <V0>|, a Maxwellian gas's mean rate over
+  /// sqrt(2) (mean speed against mean relative speed).
+  CellMean,
 };
 
 /// The contact value that multiplies nu (excluded volume).

@@ -59,6 +59,7 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
   const std::size_t species = system_.species.size();
   const bool mean_velocity = options_.frequency == CollisionFrequency::MeanVelocity;
   const bool cell_particle = options_.partner == PartnerModel::CellParticle;
+  const bool cell_mean = options_.partner == PartnerModel::CellMean;
 
   // The partners of each species in this particle's cell, and the part of the candidate rate
   // that does not depend on speed: c pi (R1 + R0)^2 n g.
@@ -83,9 +84,14 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
   }
 
   // A partner of species t: its velocity, and its spin (CellParticle: one of the cell's other
-  // particles of species t at random, as at the step start; Gaussian: the mean spin).
+  // particles of species t at random, as at the step start; Gaussian: the mean spin; CellMean:
+  // the mean velocity and spin).
   Vec3 partner_spin = Vec3::Zero();
   auto draw_partner = [&](std::size_t t) -> Vec3 {
+    if (cell_mean) {
+      partner_spin = partners[t].mean_spin;
+      return partners[t].mean_velocity;
+    }
     if (!cell_particle) {
       partner_spin = partners[t].mean_spin;
       return sample_partner_velocity(partners[t], rng_);
@@ -118,7 +124,7 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
       }
       // CellParticle: |V1 - V0| <= |V1 - <V>| + |V0 - <V>| with <V> the mean of every particle
       // of the cell, an exact bound.
-      if (mean_velocity)
+      if (mean_velocity || cell_mean)
         bound[t] = (v - partners[t].mean_velocity).norm() + drift;
       else if (cell_particle)
         bound[t] = (v - grid_.mean_velocity(cell, static_cast<std::uint32_t>(t))).norm() + drift +

@@ -21,8 +21,11 @@ void read_monte_carlo(TableReader& root, Scene& scene) {
   mc.frequency = frequency == "mean_velocity" ? CollisionFrequency::MeanVelocity : CollisionFrequency::MeanRelativeSpeed;
   const std::string contact = m->string("contact_value", "none", {"none", "enskog"});
   mc.contact_value = contact == "enskog" ? ContactValue::Enskog : ContactValue::None;
-  const std::string partner = m->string("partner", "gaussian", {"gaussian", "cell_particle"});
-  mc.partner = partner == "cell_particle" ? PartnerModel::CellParticle : PartnerModel::Gaussian;
+  const std::string partner =
+      m->string("partner", "gaussian", {"gaussian", "cell_particle", "cell_mean"});
+  mc.partner = partner == "cell_particle" ? PartnerModel::CellParticle
+               : partner == "cell_mean"   ? PartnerModel::CellMean
+                                          : PartnerModel::Gaussian;
   if (m->has("seed"))
     mc.seed = static_cast<std::uint64_t>(
         m->integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max(), "seed of the collision random numbers"));

@@ -59,6 +59,25 @@ RateMeasurement measure_mc_rate(MonteCarloEngine& mc, double duration) {
   return r;
 }
 
+/// A dilute elastic gas (phi = 0.005, T = 1) of `count` particles in a periodic cube, and MC
+/// options with one collision cell per octant.
+struct DiluteGas {
+  System gas;
+  MonteCarloOptions options;
+  double number_density;
+};
+DiluteGas dilute_gas(std::size_t count, std::uint64_t gas_seed, std::uint64_t mc_seed) {
+  GranularGasSpec spec;
+  spec.count = count;
+  spec.volume_fraction = 0.005;
+  spec.seed = gas_seed;
+  DiluteGas d{make_granular_gas(spec), MonteCarloOptions{}, 0.0};
+  d.options.cell_size = d.gas.domain.length().x() / 2.0;
+  d.options.seed = mc_seed;
+  d.number_density = double(count) / d.gas.domain.volume();
+  return d;
+}
+
 // Dilute elastic gas, phi = 0.005 (g0 = 1.0126), 4000 particles in a periodic cube of edge
 // 81.2 d, 8 collision cells of 500 particles. Kinetic theory: omega = 4 n d^2 sqrt(pi T/m)
 // (VALIDATION.md, Boltzmann limit; the MC method has no excluded volume, so no g0).
@@ -69,16 +88,8 @@ RateMeasurement measure_mc_rate(MonteCarloEngine& mc, double duration) {
 // per collision (0.09/k, engine.hpp), which the stretch-wise reference follows. The mean_velocity form's count is
 // printed beside it; it is not a test of that form (its gas cools: next test).
 TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
-  GranularGasSpec spec;
-  spec.count = 4000;
-  spec.volume_fraction = 0.005;
-  spec.seed = 21;
-  const System gas = make_granular_gas(spec);
-  MonteCarloOptions options;
-  options.cell_size = gas.domain.length().x() / 2.0;
-  options.seed = 5;
+  auto [gas, options, n] = dilute_gas(4000, 21, 5);
   MonteCarloEngine mc(gas, options);
-  const double n = 4000 / gas.domain.volume();
   const double duration = 25.0 / boltzmann_rate(n, 1.0);  // ~25 collisions per particle
   const RateMeasurement r = measure_mc_rate(mc, duration);
   const double error = 1.0 / std::sqrt(r.collisions);
@@ -121,17 +132,9 @@ TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
 // Tolerance 4 % (over 4 standard errors; the Gaussian partner's rate, a missing 1/sqrt(2), is a
 // 41 % miss).
 TEST(MonteCarloGas, MeanPartnersCollideAtTheMeanSpeedRate) {
-  GranularGasSpec spec;
-  spec.count = 32000;
-  spec.volume_fraction = 0.005;
-  spec.seed = 22;
-  const System gas = make_granular_gas(spec);
-  MonteCarloOptions options;
-  options.cell_size = gas.domain.length().x() / 2.0;
-  options.seed = 6;
+  auto [gas, options, n] = dilute_gas(32000, 22, 6);
   options.partner = PartnerModel::CellMean;
   MonteCarloEngine mc(gas, options);
-  const double n = 32000 / gas.domain.volume();
   const RateMeasurement r = measure_mc_rate(mc, 0.5 / boltzmann_rate(n, 1.0));
   const double ratio = r.measured / (r.predicted / std::numbers::sqrt2);
   std::printf(

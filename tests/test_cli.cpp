@@ -78,7 +78,8 @@ TEST_F(Cli, UsageErrorsExitTwo) {
 
 TEST_F(Cli, CheckShippedScenes) {
   for (const char* name : {"elastic_gas", "haff_cooling", "bidisperse_gas", "settling_column", "settling_sphere",
-                           "packed_bed", "fluidized_bed", "column_1d", "bubbling_bed", "fines_bed"}) {
+                           "packed_bed", "fluidized_bed", "column_1d", "bubbling_bed", "fines_bed",
+                           "narrow_tube"}) {
     EXPECT_EQ(carom("check '" + kScenes + "/" + name + ".toml'"), 0) << name << ": " << out_;
     EXPECT_NE(out_.find("grid"), std::string::npos);
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "events/event_driven/engine.hpp"
+#include "events/method_factory.hpp"
 #include "scenarios/scene/scene.hpp"
 
 using namespace carom;
@@ -71,6 +72,12 @@ TEST_P(ShippedScenes, ParseBuildAndValidate) {
   build_initial_state(scene);
   EXPECT_EQ(scene.system.particles.size(), GetParam().particles);
   EXPECT_GT(scene.end_time, 0.0);
+  if (scene.method.kind == MethodKind::SoftSphere) {
+    // Settled as soft spheres: contacts overlap a little (up to max_overlap), which the
+    // hard-sphere check would refuse; the scene's own method takes the state.
+    EXPECT_NO_THROW(make_method(scene.system, scene.method));
+    return;
+  }
   EXPECT_NO_THROW(validate_initial_state(scene.system));
   EXPECT_NO_THROW(EventDrivenEngine(scene.system, scene.method.event_driven));
 }
@@ -83,7 +90,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
                                            ShippedScene{"fluidized_bed.toml", 400}, ShippedScene{"column_1d.toml", 300},
                                            ShippedScene{"bubbling_bed.toml", 2000}, ShippedScene{"fines_bed.toml", 3207},
                                            ShippedScene{"hopper.toml", 200}, ShippedScene{"duct_flow.toml", 0},
-                                           ShippedScene{"convergent_duct.toml", 0}),
+                                           ShippedScene{"convergent_duct.toml", 0},
+                                           ShippedScene{"narrow_tube.toml", 400}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));

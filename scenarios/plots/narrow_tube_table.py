@@ -3,7 +3,10 @@
 gas velocity U, method), with the plug measurement of each case's summary.json at the scene's
 threshold and the spread of the plug length over the two thresholds beside it, the bed top's
 mean height and its rising and falling speeds, the share of beads that change plugs between
-samples, the mean distance a bead travels in 1 s, and the wall time.
+samples, the mean distance a bead travels in 1 s, when a plug first reached the lid (the top of
+the domain) and the share of beads held there at the end (centres within 3 diameters of the
+lid: a plug pinned under the lid by the gas stays, and the bed-top numbers then describe it),
+and the wall time.
 
     /usr/bin/python3 scenarios/plots/narrow_tube_table.py SWEEP_OUT [RUN_DIR ...]
 
@@ -19,7 +22,23 @@ import tomllib
 import h5py
 
 
-def row_of(summary, overrides, scene_text):
+def pinned(run_h5, diameter):
+    """(first time a bead's centre came within one diameter of the lid, share of beads within
+    3 diameters of it at the last sample), from /timeseries/plug_height."""
+    try:
+        with h5py.File(run_h5, "r") as f:
+            heights = f["timeseries/plug_height"][()]
+            t = f["timeseries/time"][()]
+            lid = float(f["domain/upper"][()][2])
+    except (OSError, KeyError):
+        return None, None
+    near = heights > lid - 0.5 * diameter - diameter
+    first = next((t[k] for k in range(len(t)) if near[k].any()), None)
+    held = float((heights[-1] > lid - 0.5 * diameter - 3 * diameter).mean())
+    return first, held
+
+
+def row_of(summary, overrides, scene_text, lid):
     scene = tomllib.loads(scene_text) if scene_text else {}
     count = sum(s.get("fill", {}).get("count", 0) for s in scene.get("species", []))
     velocity = scene.get("gas", {}).get("boundaries", {}).get("z_low", {}).get("velocity")
@@ -44,7 +63,8 @@ def row_of(summary, overrides, scene_text):
             f"{f('plugs_mean')} ± {f('plugs_std', digits=2)} | {f('length_mean')} ± "
             f"{f('length_std', digits=2)} | {spread} | {f('bed_top_mean', 1e3)} | "
             f"{f('rise_speed', 1e3)} / {f('fall_speed', 1e3)} | {f('exchange', digits=2)} | "
-            f"{f('travel_1s', 1e3)} | {summary.get('wall_seconds', float('nan')):.0f} |")
+            f"{f('travel_1s', 1e3)} | {'-' if lid[0] is None else f'{lid[0]:.2f}'} | "
+            f"{'-' if lid[1] is None else f'{lid[1]:.2f}'} | {summary.get('wall_seconds', float('nan')):.0f} |")
 
 
 def scene_text(run_h5):
@@ -60,8 +80,9 @@ def main(argv):
     if len(argv) < 2:
         sys.exit(__doc__)
     print("| N | U (m/s) | method | status | plugs | lambda/d | lambda/d at 0.2-0.4 | bed top (mm) "
-          "| rise / fall (mm/s) | exchange | travel in 1 s (mm) | wall (s) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "| rise / fall (mm/s) | exchange | travel in 1 s (mm) | at the lid from (s) | held at the lid "
+          "| wall (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     sweep = argv[1]
     cases = os.path.join(sweep, "cases")
     folders = [os.path.join(cases, c) for c in sorted(os.listdir(cases))] if os.path.isdir(cases) else [sweep]
@@ -77,7 +98,9 @@ def main(argv):
         if os.path.exists(os.path.join(folder, "case.json")):
             with open(os.path.join(folder, "case.json")) as f:
                 overrides = json.load(f).get("overrides", [])
-        print(row_of(summary, overrides, scene_text(os.path.join(folder, "run.h5"))))
+        run_h5 = os.path.join(folder, "run.h5")
+        diameter = summary.get("analysis", {}).get("plugs", {}).get("diameter", 0.0)
+        print(row_of(summary, overrides, scene_text(run_h5), pinned(run_h5, diameter)))
 
 
 if __name__ == "__main__":

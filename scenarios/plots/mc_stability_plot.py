@@ -157,8 +157,7 @@ def main():
         ax.set_xlabel("solid fraction $\\phi$")
         ax.set_ylabel("Monte Carlo / event-driven $-$ 1 (%)")
         ax.set_title(title, fontsize=11)
-        ax.text(0.02, 0.96, "shaded: within $\\pm$%g %%; dashed: where |error| $-$ its uncertainty passes %g %%"
-                % (tol, tol),
+        ax.text(0.02, 0.96, "shaded: $\\pm$%g %%; dashed: |error| $-$ uncertainty = %g %%" % (tol, tol),
                 transform=ax.transAxes, fontsize=8, va="top", color="0.3")
         ax.grid(True, which="major", color="0.85", lw=0.6)
     handles, labels = axes[0].get_legend_handles_labels()

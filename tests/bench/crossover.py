@@ -5,11 +5,12 @@ methods against the particle count N and the solid fraction phi.
 
     tests/bench/crossover.py run   OUT [--carom build/release/scenarios/carom] [--n 500 2000 8000]
                                        [--phi 0.01 0.05 0.2] [--collisions 50] [--seed 1]
+                                       [--methods event_driven soft_sphere monte_carlo]
     tests/bench/crossover.py plot  OUT FIGURE.png [--tolerance 0.02]
 
 `run` runs scenarios/scenes/mc_gas.toml (elastic spheres in a periodic box) at each (N, phi),
 once per method, for `--collisions` Enskog collision times (1 / nu, nu = 4 n d^2 g0 sqrt(pi T/m)),
-and writes OUT/crossover.csv: the method, N, phi, the process's CPU time (user + system, from
+and writes OUT/crossover.csv (a later run into the same OUT adds its rows): the method, N, phi, the process's CPU time (user + system, from
 wait4 via os.wait4), the simulated time, the measured collision frequency (summary.json's
 analysis.collision_frequency.grain-grain) and its error against the event-driven run of the same
 N, phi and seed. The methods, each at the setting that reaches the dilute-gas chart's tolerance
@@ -87,7 +88,7 @@ def run(a):
     for phi in a.phi:
         for n in a.n:
             exact = None
-            for method in METHODS:
+            for method in a.methods:
                 short = run_case(a.carom, a.out, method, n, phi, a.collisions / 5, a.seed)
                 r = run_case(a.carom, a.out, method, n, phi, a.collisions, a.seed)
                 if r is None or short is None:
@@ -101,9 +102,12 @@ def run(a):
                 rows.append(r)
                 print("%-13s N=%-6d phi=%-5g cpu %.3f s  cost %.4g CPU s per collision time  error %+.2f %%" %
                       (method, n, phi, r["cpu_seconds"], r["cost"], 100 * r["error"]), flush=True)
-    with open(os.path.join(a.out, "crossover.csv"), "w", newline="") as f:
+    path = os.path.join(a.out, "crossover.csv")
+    old = os.path.exists(path)  # a run into the same OUT adds its rows (other N, phi or methods)
+    with open(path, "a" if old else "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
+        if not old:
+            w.writeheader()
         w.writerows(rows)
 
 
@@ -121,7 +125,7 @@ def plot(a):
     phis = sorted({r["phi"] for r in rows})
     colours = {"event_driven": "#1f77b4", "soft_sphere": "#d62728", "monte_carlo": "#2ca02c"}
     markers = {"event_driven": "o", "soft_sphere": "s", "monte_carlo": "^"}
-    fig, axes = plt.subplots(1, len(phis), figsize=(3.6 * len(phis), 3.9), sharey=True)
+    fig, axes = plt.subplots(1, len(phis), figsize=(3.6 * len(phis), 3.9), sharex=True, sharey=True)
     axes = [axes] if len(phis) == 1 else axes
     print("fastest within %g %%:" % (100 * a.tolerance))
     for ax, phi in zip(axes, phis):
@@ -152,8 +156,8 @@ def plot(a):
     handles.append(plt.Line2D([], [], color="k", marker="o", ms=12, mfc="none", ls="none",
                               label="ringed: the fastest within %g %%" % (100 * a.tolerance)))
     fig.legend(handles=handles, loc="lower center", ncol=3, fontsize=8.5, frameon=False)
-    fig.suptitle("Cost at the dilute-gas chart's tolerance (%g %% on the collision frequency), elastic gas"
-                 % (100 * a.tolerance), fontsize=11)
+    fig.suptitle("Cost at the dilute-gas chart's tolerance (%g %% on the collision frequency): elastic gas, "
+                 "one seed, run loop only" % (100 * a.tolerance), fontsize=11)
     fig.tight_layout(rect=(0, 0.13, 1, 0.95))
     fig.savefig(a.figure, dpi=150)
     print("wrote " + a.figure)
@@ -169,6 +173,8 @@ def main():
     r.add_argument("--phi", type=float, nargs="+", default=[0.01, 0.05, 0.2])
     r.add_argument("--collisions", type=float, default=50.0)
     r.add_argument("--seed", type=int, default=1)
+    r.add_argument("--methods", nargs="+", default=METHODS, choices=METHODS,
+                   help="event_driven first: the others' errors are against it")
     p = sub.add_parser("plot")
     p.add_argument("out")
     p.add_argument("figure")

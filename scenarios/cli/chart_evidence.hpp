@@ -27,8 +27,8 @@ inline constexpr double kDiluteGasMonteCarloCostLow = 1.3, kDiluteGasMonteCarloC
 inline constexpr double kDiluteGasMonteCarloErrorLow = 0.025, kDiluteGasMonteCarloErrorHigh = 0.058;
 /// Soft-sphere variants' cost, in event-driven costs (lowest, highest).
 inline constexpr double kDiluteGasSoftCostLow = 8.0, kDiluteGasSoftCostHigh = 27.0;
-/// Soft-sphere variants' collision-frequency error (|relative|; smallest, largest).
-inline constexpr double kDiluteGasSoftErrorLow = 0.002, kDiluteGasSoftErrorHigh = 0.012;
+/// Soft-sphere variants' largest collision-frequency |error| (relative).
+inline constexpr double kDiluteGasSoftErrorHigh = 0.012;
 
 // ---------------------------------------------------------------------------------------------
 /// The Monte Carlo model against solid fraction (2000 elastic spheres, 30 s, phi 0.005-0.3,

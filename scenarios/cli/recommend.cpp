@@ -7,6 +7,7 @@
 
 #include "fluid/drag.hpp"
 #include "scenarios/analysis/local_fields.hpp"
+#include "scenarios/cli/chart_evidence.hpp"
 
 namespace carom {
 
@@ -33,6 +34,53 @@ double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) 
   const double r_star = s.radius() / 2.0, m_star = s.mass() / 2.0;
   const double overlap = std::pow(15.0 * m_star * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
   return 2.9432752 * overlap / v;  // VALIDATION.md, "Soft-sphere contacts"
+}
+
+/// "[chart FILE, measured DATE]": where a recommendation's numbers come from.
+std::string cite(const evidence::ChartSource& chart) {
+  return std::string(" [chart ") + chart.file + ", measured " + chart.date + "]";
+}
+
+/// Percent with three significant digits.
+std::string pct(double x) {
+  return num(100.0 * x) + " %";
+}
+
+/// The Monte Carlo method's contact value for the scene's solid fraction, from the Monte Carlo
+/// map: the Enskog contact value where Boltzmann's rate leaves the map's tolerance, and the
+/// event-driven method where even the Enskog rate leaves it.
+Advice monte_carlo_advice(const Scene& scene, const SceneNumbers& n) {
+  const bool enskog = scene.method.monte_carlo.contact_value == ContactValue::Enskog;
+  Advice a{"monte carlo", "", "", "", false};
+  a.scene = std::string("contact_value = ") + (enskog ? "enskog" : "none");
+  const double phi = std::max(n.solid_fraction, n.solid_fraction_seen);
+  const std::string tolerance = pct(evidence::kMonteCarloTolerance);
+  if (phi > evidence::kMonteCarloEnskogLimit) {
+    a.choice = "event_driven";
+    a.reason = "solid fraction " + num(phi) + " > " + num(evidence::kMonteCarloEnskogLimit) +
+               ": beyond it even the Enskog collision frequency of the Monte Carlo model left the "
+               "exact one by more than " +
+               tolerance + cite(evidence::kMonteCarloMap);
+    a.differs = true;
+    return a;
+  }
+  const bool need_enskog = phi > evidence::kMonteCarloPlainLimit;
+  a.choice = need_enskog ? "contact_value = enskog" : "contact_value = none or enskog";
+  a.reason = "solid fraction " + num(phi) +
+             ": on the Monte Carlo map (2000 elastic spheres) the collision frequency left the "
+             "exact one by more than " +
+             tolerance + " from phi = " + num(evidence::kMonteCarloPlainLimit) +
+             " with contact_value = none (" + pct(evidence::kMonteCarloPlainErrorAt005) +
+             " at phi = 0.05) and stayed within " + pct(evidence::kMonteCarloEnskogWorstError) +
+             " up to phi = " + num(evidence::kMonteCarloEnskogLimit) +
+             " with enskog; the mean temperature stayed within " +
+             pct(evidence::kMonteCarloTemperatureWorstError) +
+             " up to phi = " + num(evidence::kMonteCarloTemperatureLimit) +
+             " with either partner, and was " + pct(evidence::kMonteCarloCellParticleErrorAt02) +
+             " off at phi = 0.2 (cell_particle), " + pct(evidence::kMonteCarloGaussianErrorAt03) +
+             " at phi = 0.3 (gaussian)" + cite(evidence::kMonteCarloMap);
+  a.differs = need_enskog && !enskog;
+  return a;
 }
 
 }  // namespace
@@ -256,11 +304,21 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
                               : std::string("contact time unknown")) +
         ", " + num(100 * n.lasting_share) +
         " % in lasting contacts): exact events. Monte Carlo is not recommended by itself: "
-        "on the dilute gas chart (1320 spheres, phi = 0.05) it cost 1.3-3.4 times the events "
-        "and missed the collision frequency by 2.5-6 %";
+        "on the dilute gas chart (1320 spheres, phi = 0.05) it cost " +
+        num(evidence::kDiluteGasMonteCarloCostLow) + "-" +
+        num(evidence::kDiluteGasMonteCarloCostHigh) + " times the events (" +
+        num(evidence::kDiluteGasEventCost) +
+        " CPU s per simulated s) and missed the collision "
+        "frequency by " +
+        pct(evidence::kDiluteGasMonteCarloErrorLow) + " to " +
+        pct(evidence::kDiluteGasMonteCarloErrorHigh) + "; soft spheres came within " +
+        pct(evidence::kDiluteGasSoftErrorHigh) + " at " + num(evidence::kDiluteGasSoftCostLow) +
+        "-" + num(evidence::kDiluteGasSoftCostHigh) + " times the cost" +
+        cite(evidence::kDiluteGas);
   }
   method.differs = method.choice != method.scene;
   advice.push_back(method);
+  if (now == MethodKind::MonteCarlo) advice.push_back(monte_carlo_advice(scene, n));
   if (!has_gas) {
     advice.push_back({"coupling", "none", "no gas in the scene", "none", false});
     return advice;
@@ -283,7 +341,13 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
                       ": the particles change the gas momentum by about that share";
   } else {
     coupling.reason = "mass loading " + num(n.mass_loading) + " >= " + num(kOneWayLoading) +
-                      ": the particles' drag and volume change the gas";
+                      ": the particles' drag and volume change the gas (a small fluidized bed "
+                      "with one-way coupling carried only " +
+                      num(evidence::kFluidOneWayForceLow) + "-" +
+                      num(evidence::kFluidOneWayForceHigh) +
+                      " of its weight on the gas, stayed packed and stopped with "
+                      "lasting_contacts)" +
+                      cite(evidence::kFluidMap);
   }
   coupling.differs = coupling.choice != coupling.scene;
   advice.push_back(coupling);
@@ -292,16 +356,22 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
   if (method.choice != "soft_sphere") {
     const bool kick = scene.flight.model == FlightModel::Kick;
     Advice flight{"flight", "relax", "", kick ? "kick" : "relax", false};
+    // What the fluid step itself costs in accuracy, with relax flights, on the fluid map.
+    const std::string fluid_step =
+        " (with relax flights, fluid steps from 1e-4 s to " + num(evidence::kFluidLargestStep) +
+        " s moved a small fluidized bed's gas force per weight by at most " +
+        pct(evidence::kFluidStepForceError) + " and its mixing rate by at most " +
+        pct(evidence::kFluidStepMixingError) + ")" + cite(evidence::kFluidMap);
     if (n.step_ratio >= kKickStepRatio) {
       flight.choice = "kick or relax";
       flight.reason = "the shortest relaxation time is " + num(n.step_ratio) +
                       " fluid steps: kicks are stable and first-order accurate to about " +
-                      num(100.0 / n.step_ratio) + " %, and cheaper to predict";
+                      num(100.0 / n.step_ratio) + " %, and cheaper to predict" + fluid_step;
     } else {
       flight.reason = "the shortest relaxation time is " + num(n.step_ratio) + " fluid steps (< " +
                       num(kKickStepRatio) + "): kicks would be inaccurate" +
                       (n.step_ratio < 2 ? " and unstable (step > 2 tau)" : "") +
-                      "; relax flights are exact for any step";
+                      "; relax flights are exact for any step" + fluid_step;
       flight.differs = kick;
     }
     advice.push_back(flight);
@@ -322,6 +392,13 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
     if (n.cell_ratio < kCellDiameters)
       grid.reason += "; the scene's smallest cell is " + num(n.cell_ratio) +
                      " diameters, finer than the drag closures assume";
+    grid.reason +=
+        "; in a small fluidized bed, cells of 2 and 4 diameters moved the gas force per "
+        "weight by " +
+        pct(evidence::kFluidForceErrorCell2) + " and " + pct(evidence::kFluidForceErrorCell4) +
+        " and the mixing rate by " + pct(evidence::kFluidMixingErrorCell2) + " and " +
+        pct(evidence::kFluidMixingErrorCell4) + " from cells of 1 diameter" +
+        cite(evidence::kFluidMap);
   }
   grid.differs = n.gas_dimensions != needed;
   advice.push_back(grid);

@@ -3,7 +3,9 @@
 /// dimensionless numbers, estimated from the scene and its initial state before anything runs,
 /// and from them the method, flight model, gas coupling and gas dimensionality to use, each with
 /// its reason. The estimates are orders of magnitude (stated with each number); the thresholds
-/// are named constants below, each with the reason for its value.
+/// are named constants below, each with the reason for its value. Where a shipped chart backs a
+/// recommendation, its reason gives the chart's measured numbers and names the chart file
+/// (chart_evidence.hpp holds them).
 #include <string>
 #include <vector>
 
@@ -55,7 +57,7 @@ struct SceneNumbers {
 
 /// One recommendation.
 struct Advice {
-  std::string topic;     ///< "method", "flight", "coupling", "gas grid".
+  std::string topic;     ///< "method", "monte carlo", "flight", "coupling", "gas grid".
   std::string choice;    ///< What to use.
   std::string reason;    ///< Why, with the numbers.
   std::string scene;     ///< What the scene has now.

@@ -1,0 +1,82 @@
+#pragma once
+/// The measured numbers of the shipped charts that back `carom check`'s recommendations
+/// (recommend.cpp cites them with the chart's file). The one place they live: when a chart is
+/// run again, change its block here to the numbers its record then states (the record and the
+/// command that reproduces each number are named with the chart).
+
+namespace carom::evidence {
+
+/// A shipped chart: its file (from the repository root), the date its numbers were measured
+/// and where its record is.
+struct ChartSource {
+  const char* file;
+  const char* date;
+  const char* record;
+};
+
+// ---------------------------------------------------------------------------------------------
+/// The dilute elastic gas (1320 spheres, phi = 0.05, 60 s, seeds 1-4): all three methods'
+/// collision frequency against event-driven (README.md, "Speed against accuracy").
+inline constexpr ChartSource kDiluteGas{"scenarios/scenes/dilute_gas_chart.toml", "2026-12-02",
+                                        "README.md"};
+/// Event-driven cost, CPU s per simulated second.
+inline constexpr double kDiluteGasEventCost = 0.0039;
+/// Monte Carlo variants' cost, in event-driven costs (lowest, highest).
+inline constexpr double kDiluteGasMonteCarloCostLow = 1.3, kDiluteGasMonteCarloCostHigh = 3.4;
+/// Monte Carlo variants' collision-frequency error (relative; lowest, highest).
+inline constexpr double kDiluteGasMonteCarloErrorLow = 0.025, kDiluteGasMonteCarloErrorHigh = 0.058;
+/// Soft-sphere variants' cost, in event-driven costs (lowest, highest).
+inline constexpr double kDiluteGasSoftCostLow = 8.0, kDiluteGasSoftCostHigh = 27.0;
+/// Soft-sphere variants' largest collision-frequency |error| (relative).
+inline constexpr double kDiluteGasSoftErrorHigh = 0.012;
+
+// ---------------------------------------------------------------------------------------------
+/// The Monte Carlo model against solid fraction (2000 elastic spheres, 30 s, phi 0.005-0.3,
+/// seeds 1-8, automatic step and cells; scenarios/scenes/STABILITY_MC_FLUID.md): where its
+/// collision frequency and mean temperature leave the event-driven result by more than
+/// kMonteCarloTolerance.
+inline constexpr ChartSource kMonteCarloMap{"scenarios/scenes/stability_monte_carlo.toml",
+                                            "2026-12-02", "scenarios/scenes/STABILITY_MC_FLUID.md"};
+/// The map's tolerance (relative).
+inline constexpr double kMonteCarloTolerance = 0.05;
+/// Solid fraction where the plain (Boltzmann, contact_value = "none") collision frequency
+/// leaves the tolerance (by more than its uncertainty; 0.0227 and 0.0244 for the two partners).
+inline constexpr double kMonteCarloPlainLimit = 0.023;
+/// The plain collision frequency's error at phi = 0.05 (relative; -13.4 % and -12.7 %).
+inline constexpr double kMonteCarloPlainErrorAt005 = -0.13;
+/// Solid fraction up to which the Enskog (contact_value = "enskog") collision frequency stayed
+/// within the tolerance with either partner (it left it between 0.2 and 0.3: +11 % and +18 % at
+/// 0.3).
+inline constexpr double kMonteCarloEnskogLimit = 0.2;
+/// The Enskog collision frequency's largest |error| up to kMonteCarloEnskogLimit (relative).
+inline constexpr double kMonteCarloEnskogWorstError = 0.042;
+/// Solid fraction up to which the mean temperature stayed within the tolerance with every
+/// variant, and its largest |error| there (relative).
+inline constexpr double kMonteCarloTemperatureLimit = 0.05;
+inline constexpr double kMonteCarloTemperatureWorstError = 0.036;
+/// Above it: the mean temperature with partner = "cell_particle" at phi = 0.2 and with the
+/// Gaussian partners (contact_value = "none") at phi = 0.3 (relative errors).
+inline constexpr double kMonteCarloCellParticleErrorAt02 = -0.081;
+inline constexpr double kMonteCarloGaussianErrorAt03 = 0.109;
+
+// ---------------------------------------------------------------------------------------------
+/// The fluid step and gas cells in a small fluidized bed (400 beads of 1 mm at 1.6 m/s, relax
+/// flights, seeds 1-3; STABILITY_MC_FLUID.md): errors against the finest setting (1e-4 s, cells
+/// of 1 diameter), relative.
+inline constexpr ChartSource kFluidMap{"scenarios/scenes/stability_fluid.toml", "2026-12-02",
+                                       "scenarios/scenes/STABILITY_MC_FLUID.md"};
+/// The largest fluid step of the map (s): up to it the step moved the gas force per weight (the
+/// pressure drop) by at most kFluidStepForceError with cells of 1 and 2 diameters, and the
+/// mixing rate by at most kFluidStepMixingError with cells of 1 diameter.
+inline constexpr double kFluidLargestStep = 2e-3;
+inline constexpr double kFluidStepForceError = 0.0077, kFluidStepMixingError = 0.143;
+/// Gas force per weight error of cells of 2 and 4 diameters at the finest step.
+inline constexpr double kFluidForceErrorCell2 = -0.0074, kFluidForceErrorCell4 = -0.047;
+/// Mixing rate error of cells of 2 and 4 diameters at the finest step.
+inline constexpr double kFluidMixingErrorCell2 = -0.36, kFluidMixingErrorCell4 = -0.40;
+/// One-way coupling (2e-4 s, cells of 2 diameters): the gas carried only this share of the
+/// bed's weight (lowest, highest over the seeds), the bed stayed packed and every run stopped
+/// with lasting_contacts.
+inline constexpr double kFluidOneWayForceLow = 0.43, kFluidOneWayForceHigh = 0.50;
+
+}  // namespace carom::evidence

@@ -1,0 +1,160 @@
+// `carom check` cites the shipped charts (scenarios/cli/chart_evidence.hpp): where a chart backs
+// a recommendation, its reason carries the chart's measured numbers and names the chart file,
+// and a chart is cited only where its topic applies. The numbers are taken from
+// chart_evidence.hpp and formatted as recommend.cpp formats them (three significant digits), so
+// the test checks that the output carries them, not their values (the records hold those).
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "scenarios/cli/chart_evidence.hpp"
+#include "scenarios/cli/recommend.hpp"
+
+namespace carom {
+namespace {
+
+const std::string kScenes = CAROM_SCENES_DIR;
+
+Scene placed(const std::string& file, const std::vector<std::string>& overrides) {
+  Scene scene = load_scene(kScenes + "/" + file, overrides);
+  scene.settle_time = 0;
+  build_initial_state(scene);
+  return scene;
+}
+
+const Advice* find(const std::vector<Advice>& advice, const std::string& name) {
+  for (const Advice& a : advice)
+    if (a.topic == name) return &a;
+  return nullptr;
+}
+
+/// recommend.cpp's number format: three significant digits.
+std::string num(double x) {
+  std::ostringstream out;
+  out.precision(3);
+  out << x;
+  return out.str();
+}
+std::string pct(double x) {
+  return num(100.0 * x) + " %";
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(RecommendCharts, DiluteGasChartBacksTheMethodAndNoFluidChartWithoutGas) {
+  const Scene gas = placed("dilute_gas.toml", {});
+  const std::vector<Advice> advice = recommend(gas, scene_numbers(gas));
+  const std::string reason = find(advice, "method")->reason;
+  EXPECT_TRUE(has(reason, evidence::kDiluteGas.file)) << reason;
+  EXPECT_TRUE(has(reason, evidence::kDiluteGas.date)) << reason;
+  for (double x : {evidence::kDiluteGasMonteCarloCostLow, evidence::kDiluteGasMonteCarloCostHigh,
+                   evidence::kDiluteGasEventCost, evidence::kDiluteGasSoftCostLow,
+                   evidence::kDiluteGasSoftCostHigh})
+    EXPECT_TRUE(has(reason, num(x))) << num(x) << " not in: " << reason;
+  for (double x : {evidence::kDiluteGasMonteCarloErrorLow, evidence::kDiluteGasMonteCarloErrorHigh,
+                   evidence::kDiluteGasSoftErrorHigh})
+    EXPECT_TRUE(has(reason, pct(x))) << pct(x) << " not in: " << reason;
+  // No gas and no Monte Carlo: neither map is cited anywhere.
+  const std::string text = describe_recommendation(scene_numbers(gas), advice);
+  EXPECT_FALSE(has(text, evidence::kFluidMap.file)) << text;
+  EXPECT_FALSE(has(text, evidence::kMonteCarloMap.file)) << text;
+  EXPECT_EQ(find(advice, "monte carlo"), nullptr);
+}
+
+TEST(RecommendCharts, FluidMapBacksTheGasGridCouplingAndRelaxFlights) {
+  // small_bed: a two-way bed (mass loading far above 0.1), fluid steps of 2e-4 s against a
+  // relaxation time U_t / g of about 0.7 s: kick or relax flights.
+  const Scene bed = placed("small_bed.toml", {});
+  const SceneNumbers n = scene_numbers(bed);
+  const std::vector<Advice> advice = recommend(bed, n);
+  const std::string grid = find(advice, "gas grid")->reason;
+  EXPECT_TRUE(has(grid, evidence::kFluidMap.file)) << grid;
+  for (double x : {evidence::kFluidForceErrorCell2, evidence::kFluidForceErrorCell4,
+                   evidence::kFluidMixingErrorCell2, evidence::kFluidMixingErrorCell4})
+    EXPECT_TRUE(has(grid, pct(x))) << pct(x) << " not in: " << grid;
+  const Advice* coupling = find(advice, "coupling");
+  ASSERT_EQ(coupling->choice, "two-way");
+  EXPECT_TRUE(has(coupling->reason, evidence::kFluidMap.file)) << coupling->reason;
+  EXPECT_TRUE(has(coupling->reason, num(evidence::kFluidOneWayForceLow))) << coupling->reason;
+  EXPECT_TRUE(has(coupling->reason, num(evidence::kFluidOneWayForceHigh))) << coupling->reason;
+  EXPECT_TRUE(has(coupling->reason, "lasting_contacts")) << coupling->reason;
+  // Both flight advices cite the map: kicks allowed at 2e-4 s, relax only at 0.02 s.
+  const Scene coarse = placed("small_bed.toml", {"gas.time_step=0.02"});
+  const SceneNumbers c = scene_numbers(coarse);
+  const std::vector<Advice> coarse_advice = recommend(coarse, c);
+  ASSERT_GE(n.step_ratio, kKickStepRatio);
+  ASSERT_LT(c.step_ratio, kKickStepRatio);
+  for (const Advice* flight : {find(advice, "flight"), find(coarse_advice, "flight")}) {
+    EXPECT_TRUE(has(flight->reason, evidence::kFluidMap.file)) << flight->reason;
+    EXPECT_TRUE(has(flight->reason, num(evidence::kFluidLargestStep) + " s")) << flight->reason;
+    EXPECT_TRUE(has(flight->reason, pct(evidence::kFluidStepForceError))) << flight->reason;
+    EXPECT_TRUE(has(flight->reason, pct(evidence::kFluidStepMixingError))) << flight->reason;
+  }
+  EXPECT_EQ(find(coarse_advice, "flight")->choice, "relax");
+  // The whole `carom check` section carries them too.
+  EXPECT_TRUE(has(describe_recommendation(n, advice), evidence::kFluidMap.date));
+}
+
+/// mc_gas.toml run by the Monte Carlo method at solid fraction phi (the box edge for 2000
+/// spheres), with the scene's contact value and partner as given.
+Scene mc_gas(double phi, const std::string& contact_value, const std::string& partner) {
+  const double edge = std::cbrt(2000 * M_PI / 6 / phi);
+  const std::string e = num(edge);
+  return placed("mc_gas.toml",
+                {"method.kind=monte_carlo", "domain.max=[" + e + "," + e + "," + e + "]",
+                 "monte_carlo.contact_value=" + contact_value, "monte_carlo.partner=" + partner});
+}
+
+TEST(RecommendCharts, MonteCarloMapOnBothSidesOfItsLimits) {
+  // The estimate is the larger of the box's solid fraction and that around a typical particle
+  // (sample cells of 4 diameters weighted by their counts), which in a dilute gas exceeds the
+  // box's by the cells' counting noise (a factor 1 + 1/<count>: 2.6 at phi = 0.005): the dilute
+  // scene is the map's most dilute one, the others a factor of 2-3 inside the limits.
+  const double dilute = 0.005;
+  const double middle =
+      std::sqrt(evidence::kMonteCarloPlainLimit * evidence::kMonteCarloEnskogLimit);
+  const double dense = std::min(0.3, 2 * evidence::kMonteCarloEnskogLimit);
+  ASSERT_GT(middle, 2 * evidence::kMonteCarloPlainLimit);
+  ASSERT_GT(dense, 1.2 * evidence::kMonteCarloEnskogLimit);
+
+  const Scene a = mc_gas(dilute, "none", "gaussian");
+  const SceneNumbers an = scene_numbers(a);
+  ASSERT_LT(std::max(an.solid_fraction, an.solid_fraction_seen), evidence::kMonteCarloPlainLimit);
+  const std::vector<Advice> low = recommend(a, an);
+  const Advice* mc = find(low, "monte carlo");
+  ASSERT_NE(mc, nullptr);
+  EXPECT_EQ(mc->choice, "contact_value = none or enskog");
+  EXPECT_FALSE(mc->differs);
+  EXPECT_TRUE(has(mc->reason, evidence::kMonteCarloMap.file)) << mc->reason;
+  EXPECT_TRUE(has(mc->reason, evidence::kMonteCarloMap.date)) << mc->reason;
+  for (const std::string& part :
+       {num(evidence::kMonteCarloPlainLimit), pct(evidence::kMonteCarloPlainErrorAt005),
+        pct(evidence::kMonteCarloEnskogWorstError), num(evidence::kMonteCarloEnskogLimit),
+        pct(evidence::kMonteCarloTemperatureWorstError), num(evidence::kMonteCarloTemperatureLimit),
+        pct(evidence::kMonteCarloCellParticleErrorAt02),
+        pct(evidence::kMonteCarloGaussianErrorAt03)})
+    EXPECT_TRUE(has(mc->reason, part)) << part << " not in: " << mc->reason;
+
+  const Scene b = mc_gas(middle, "enskog", "cell_particle");
+  const std::vector<Advice> mid = recommend(b, scene_numbers(b));
+  EXPECT_EQ(find(mid, "monte carlo")->choice, "contact_value = enskog");
+  EXPECT_FALSE(find(mid, "monte carlo")->differs);
+  const Scene c = mc_gas(middle, "none", "cell_particle");
+  const std::vector<Advice> plain = recommend(c, scene_numbers(c));
+  EXPECT_TRUE(find(plain, "monte carlo")->differs);  // Boltzmann's rate is off here
+
+  const Scene d = mc_gas(dense, "enskog", "gaussian");
+  const std::vector<Advice> high = recommend(d, scene_numbers(d));
+  EXPECT_EQ(find(high, "monte carlo")->choice, "event_driven");
+  EXPECT_TRUE(find(high, "monte carlo")->differs);
+  EXPECT_TRUE(has(find(high, "monte carlo")->reason, evidence::kMonteCarloMap.file));
+  // An event-driven scene gets no Monte Carlo advice.
+  const Scene e = placed("mc_gas.toml", {});
+  const std::vector<Advice> events = recommend(e, scene_numbers(e));
+  EXPECT_EQ(find(events, "monte carlo"), nullptr);
+}
+
+}  // namespace
+}  // namespace carom

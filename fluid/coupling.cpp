@@ -213,6 +213,7 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
   species_porosity_.assign(species_density_.size(), 0.0);
   species_count_.assign(species_density_.size(), 0);
   particle_gas_velocity_.resize(n);
+  longitudinal_rates_.resize(keep_longitudinal_rates_ ? n : 0);
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 u = Vec3::Zero(), grad_p = Vec3::Zero();
     double eps = 0.0;
@@ -223,8 +224,19 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
       eps += fraction * porosity_[c];
     }
     const Vec3& v = particles.velocity[i];
-    const double k = drag_coefficient(i, particles, eps, (u - v).norm());
+    const double slip = (u - v).norm();
+    const double k = drag_coefficient(i, particles, eps, slip);
     const double rate = k / particles.mass[i];
+    if (keep_longitudinal_rates_) {
+      // d(K s)/ds by a forward difference over a relative slip change of 1e-6 (the drag laws
+      // are smooth there; at zero slip the derivative is K itself).
+      const double ds = 1e-6 * slip;
+      const double tangent =
+          slip > 0.0
+              ? (drag_coefficient(i, particles, eps, slip + ds) * (slip + ds) - k * slip) / ds
+              : k;
+      longitudinal_rates_[i] = std::max(rate, tangent / particles.mass[i]);
+    }
     const std::uint32_t s = particles.species[i];
     flights[i] = RelaxFlight{rate, gravity_ + rate * u - grad_p / species_density_[s]};
     total_drag_ += k * (u - v);

@@ -97,6 +97,15 @@ class GasCoupling {
   const std::vector<Vec3>& gas_velocity_at_particles() const { return particle_gas_velocity_; }
   /// Sum of the drag forces on the particles at the last step, N.
   const Vec3& total_drag() const { return total_drag_; }
+  /// From the next step on, also keep each particle's longitudinal drag rate (one more drag
+  /// evaluation per particle and step): what explicit kicks need for their stability check.
+  void keep_longitudinal_rates(bool on) { keep_longitudinal_rates_ = on; }
+  /// Per particle at the last step (method order; empty unless keep_longitudinal_rates), 1/s:
+  /// (1/m_i) d|F|/d|s| at the slip s, F = K(|s|) s the drag. For a drag that grows faster than
+  /// the slip (any Reynolds-number correction) it exceeds the secant rate K/m of the flights,
+  /// and it is what limits an explicit step along the slip: the kick multiplies a small
+  /// departure from the terminal velocity by 1 - dt_p times this rate.
+  const std::vector<double>& longitudinal_rates() const { return longitudinal_rates_; }
   const CouplingTimes& times() const { return times_; }
 
   /// Writes the coupling's checkpoint into `group` (new datasets, one per array, doubles as
@@ -137,6 +146,8 @@ class GasCoupling {
   std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
   std::vector<Vec3> particle_gas_velocity_;      ///< u_i per particle (last step), m/s.
   Vec3 total_drag_ = Vec3::Zero();
+  bool keep_longitudinal_rates_ = false;
+  std::vector<double> longitudinal_rates_;  ///< (1/m_i) d|F|/d|s| per particle (last step), 1/s.
   CouplingTimes times_;
 };
 

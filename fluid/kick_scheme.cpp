@@ -1,5 +1,6 @@
 #include "kick_scheme.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -18,22 +19,32 @@ SpinForceInput KickScheme::spin_input(const ParticleStore& particles, std::size_
 }
 
 void KickScheme::check_stability(const ParticleStore& particles,
-                                 const std::vector<RelaxFlight>& flights) const {
+                                 const std::vector<RelaxFlight>& flights,
+                                 const std::vector<double>* longitudinal_rates) const {
   const double dt_p = particle_step_;
+  const bool tangent =
+      longitudinal_rates != nullptr && longitudinal_rates->size() == particles.size();
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (flights[i].rate * dt_p <= 2.0) continue;
+    const double limiting_rate =
+        tangent ? std::max(flights[i].rate, (*longitudinal_rates)[i]) : flights[i].rate;
+    if (limiting_rate * dt_p <= 2.0) continue;
     const double tau = 1.0 / flights[i].rate;
     std::ostringstream out;
+    out.precision(4);
     out << "kick flights are unstable: particle " << particles.id[i]
-        << " has a drag relaxation time tau = m/K = " << tau
-        << " s, and the particle step dt_p = " << dt_p
-        << " s exceeds 2 tau: each explicit drag kick overshoots the gas velocity by a factor |1 - "
-           "dt_p/tau| = "
-        << std::abs(1.0 - dt_p / tau)
+        << " has a drag relaxation time tau = m/K = " << tau << " s";
+    if (limiting_rate > flights[i].rate)
+      out << " and, as its drag grows faster than the slip, a longitudinal rate (1/m) dF/ds = "
+          << limiting_rate
+          << " 1/s (the drag is refreshed before every kick: dt_p >= the fluid step)";
+    out << "; the particle step dt_p = " << dt_p << " s exceeds the largest stable step "
+        << 2.0 / limiting_rate
+        << " s (2 m/(dF/ds); 2 tau at a frozen drag): each explicit drag kick overshoots the "
+           "terminal velocity by a factor |1 - dt_p x rate| = "
+        << std::abs(1.0 - dt_p * limiting_rate)
         << " > 1, so velocities grow without bound. Remedy: flight.model = \"relax\" (exact for "
-           "any step), or "
-           "flight.particle_step below "
-        << 2.0 * tau << " s (tau / 5 or less for first-order accuracy).";
+           "any step), or flight.particle_step below "
+        << 2.0 / limiting_rate << " s (tau / 5 or less for first-order accuracy).";
     throw KickUnstable(out.str());
   }
   if (spin_.models.torque == RotationalTorque::None) return;

@@ -96,6 +96,40 @@ TEST(Collapse, BouncingBallWithoutTcModelThrowsDiagnostic) {
               });
 }
 
+// The low-speed rule on both sides of the collapse (issue 18, stability_collapse.toml): the same
+// ball with impacts slower than 0.05 m/s elastic ends up bouncing elastically at about that
+// speed (flights of ~2 v / g = 0.01 s, ~600 of them to t = 6 s, far below 1000 within any
+// window) and finishes; the rule is what saves it, since BouncingBallWithoutTcModelThrowsDiagnostic
+// above collapses at 3.635 s. With a threshold of 1e-12 m/s the bounces still shrink to flights
+// of ~2e-13 s, 1000 of which fit in the automatic window (1e-9 d / sqrt(g d) = 3.2e-10 s): the
+// detector must fire, and its message must say that the rule is on, never advise turning it on.
+TEST(Collapse, LowSpeedRuleStopsTheCollapseOnlyAboveTheBounceSpeedThatCollapses) {
+  test::expect_finishes(20, [] {
+    EventDrivenOptions good;
+    good.collapse.elastic_below_speed = 0.05;
+    EventDrivenEngine saved(bouncing_ball(), good);
+    EXPECT_NO_THROW(saved.run_until(6.0));
+    EXPECT_EQ(saved.time(), 6.0);
+    EXPECT_LT(saved.position(0).z() - 0.5, 0.05 * 0.05 / (2 * 9.81) * 1.001)
+        << "an elastic bounce at 0.05 m/s rises at most v^2 / 2g";
+
+    EventDrivenOptions bad;
+    bad.collapse.elastic_below_speed = 1e-12;
+    EventDrivenEngine sim(bouncing_ball(), bad);
+    try {
+      sim.run_until(6.0);
+      ADD_FAILURE() << "no InelasticCollapse with a threshold of 1e-12 m/s";
+    } catch (const InelasticCollapse& collapse) {
+      const std::string message = collapse.what();
+      EXPECT_NE(message.find("slow impacts are already elastic below 1e-12 m/s"), std::string::npos)
+          << message;
+      EXPECT_EQ(message.find("or make slow impacts elastic"), std::string::npos) << message;
+      EXPECT_NE(message.find("turn on the TC model"), std::string::npos) << message;
+      EXPECT_LT(sim.time(), 3.64) << "the collapse point is t = 3.635 s";
+    }
+  });
+}
+
 // With the TC model on but a contact time far too short (1e-9 s) for the detector's window
 // (1e-5 s, 1000 collisions), the ball's elastic rattle on the floor (period ~ t_c) is caught.
 // The message must say that the TC model is on and what its setting does, never advise turning

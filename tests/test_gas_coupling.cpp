@@ -3,6 +3,7 @@
 // weight, and the kick scheme's instability caught and explained.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -203,6 +204,59 @@ TEST(KickFlights, UnstableStepIsDetectedAndExplained) {
   const double w = 1.0, tau = 1.0, dt = 2.5;
   for (int k = 0; k < 20; ++k) v += dt * (w - v) / tau;
   EXPECT_GT(std::abs(v - w), 1000.0);
+}
+
+// The limit of kicks that see a drag refreshed before each (dt_p >= the fluid step) is not 2 tau
+// but 2 m / (dF/ds) (issue 18; stability_kick.toml): the kicks are explicit Euler steps of the
+// nonlinear drag F = K(s) s, and a departure from the terminal velocity is multiplied by
+// 1 - dt_p (1/m) dF/ds per kick. For the 0.5 mm bead at its terminal velocity (Re = 124):
+// tau = 0.378 s, 2 tau = 0.756 s, 2 m/(dF/ds) = 0.487 s (Schiller-Naumann: dF/ds = K (1 +
+// 0.15 * 1.687 Re^0.687)). Oracle, without carom: the same explicit map of the reference's drag
+// law converges at 0.40 s and at 0.55 s is left in a cycle that never reaches v_t; carom must
+// run the first to the end and refuse the second (which a 2 tau check let through) with a
+// message naming a largest stable step below 0.55 s and at least that at v_t less 20 %
+// (the oscillation the refusal cuts short may overshoot v_t, where the limit is lower). The
+// check is local, at the state reached: from rest the first kick overshoots v_t (to 3.92 m/s
+// at 0.40 s, where the limit is 0.471 s), so steps a little below 0.487 s (0.45 s: the limit
+// falls to 0.438 s on the way) are refused although the map would still converge.
+TEST(KickFlights, RefreshedDragIsLimitedByItsSlopeNotTwiceTau) {
+  const double d = 5e-4, rho_p = 2500.0, rho_g = 1.2, mu = 1.8e-5, g = 9.81;
+  auto accel = [&](double v) {  // downward speed v > 0
+    const double re = rho_g * d * v / mu;
+    return g * (1.0 - rho_g / rho_p) -
+           18.0 * mu / (rho_p * d * d) * (1.0 + 0.15 * std::pow(re, 0.687)) * v;
+  };
+  auto explicit_map = [&](double dt, int kicks) {
+    double v = 0.0, worst_late = 0.0;
+    for (int k = 0; k < kicks; ++k) {
+      v += dt * accel(v);
+      if (k >= kicks / 2) worst_late = std::max(worst_late, std::abs(v - 3.706));
+    }
+    return worst_late;
+  };
+  EXPECT_LT(explicit_map(0.40, 200), 1e-3) << "0.40 s < 0.471 s: the departure dies out";
+  EXPECT_GT(explicit_map(0.55, 200), 0.3) << "0.55 s > 0.487 s: it does not, although 0.55 < 2 tau";
+
+  CoupledRun good =
+      start("settling_sphere.toml",
+            {"flight.model=\"kick\"", "flight.particle_step=0.40", "gas.time_step=0.01"});
+  EXPECT_NO_THROW(good.sim->run_until(4.0));
+  EXPECT_EQ(good.sim->time(), 4.0);
+  CoupledRun bad =
+      start("settling_sphere.toml",
+            {"flight.model=\"kick\"", "flight.particle_step=0.55", "gas.time_step=0.01"});
+  try {
+    bad.sim->run_until(4.0);
+    FAIL() << "kick flights with dt_p > 2 m/(dF/ds) must be refused";
+  } catch (const KickUnstable& e) {
+    const std::string message = e.what();
+    const std::size_t at = message.find("largest stable step ");
+    ASSERT_NE(at, std::string::npos) << message;
+    const double limit = std::stod(message.substr(at + 20));
+    EXPECT_LT(limit, 0.55) << message;
+    EXPECT_GT(limit, 0.8 * 0.487) << message;
+    EXPECT_NE(message.find("dF/ds"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

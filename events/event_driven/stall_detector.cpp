@@ -37,7 +37,13 @@ std::string collapse_diagnostic(double t, const std::string& particle, std::uint
                                 const CollapseOptions& options) {
   std::ostringstream out;
   out << "inelastic collapse at t = " << t << " s: " << particle << " took part in " << count
-      << " collisions within " << window << " s, the last with " << partner
+      << " collisions ";
+  // Collisions closer than the resolution of t (a spacing below 1e-16 t) all fall at one time.
+  if (window > 0.0)
+    out << "within " << window << " s";
+  else
+    out << "at the same time (their spacing fell below the resolution of t)";
+  out << ", the last with " << partner
       << ". Hard spheres cannot rest in lasting contact, so the event rate diverges. "
       << collapse_remedy(options);
   return out.str();

@@ -16,6 +16,10 @@ std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene
     gas->prepare(sim.system().particles);  // porosity at t = 0 for the first outputs
   GasCoupling* coupling = gas.get();
   const bool kick = scene.flight.model == FlightModel::Kick;
+  // Kicks at least a fluid step apart see a drag refreshed at each: their stability is that of
+  // explicit Euler on the nonlinear drag, limited by the longitudinal rate (kick_scheme.hpp).
+  const bool refreshed = kick && scene.flight.particle_step >= scene.gas.time_step;
+  coupling->keep_longitudinal_rates(refreshed);
   // Spin forces (gas.magnus_lift, gas.rotational_torque) are kicks too: the scene allows them
   // only with kick flights (scenarios/scene/gas_scene.cpp says why).
   const KickScheme kicks(scene.flight.particle_step, system.flight.gravity,
@@ -23,9 +27,12 @@ std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene
                                         scene.gas.viscosity});
   // The fluid step comes first in the calendar, so at a common time the kick uses the new drag.
   sim.add_synchronising_action("fluid_step", sim.time(), scene.gas.time_step,
-                               [coupling, kick, kicks](GlobalStep& step) {
+                               [coupling, kick, refreshed, kicks](GlobalStep& step) {
                                  coupling->step(step.time, step.particles, step.flights);
-                                 if (kick) kicks.check_stability(step.particles, step.flights);
+                                 if (kick)
+                                   kicks.check_stability(
+                                       step.particles, step.flights,
+                                       refreshed ? &coupling->longitudinal_rates() : nullptr);
                                });
   if (kick)
     sim.add_synchronising_action(

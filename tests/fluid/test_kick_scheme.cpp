@@ -78,5 +78,26 @@ TEST(KickScheme, RefusesStepsBeyondTwiceTheRelaxationTime) {
   EXPECT_THROW(KickScheme(0.6, kG).check_stability(beyond.particles, beyond.flights), KickUnstable);
 }
 
+// With the longitudinal drag rate (1/m) dF/ds (GasCoupling::longitudinal_rates; larger than the
+// secant rate K/m for a drag growing faster than the slip) the limit is 2 / that rate: here
+// 2 / 6 = 1/3 s, below 2 tau = 0.5 s. At the limit the kick passes; just beyond it is refused
+// with the largest stable step named; the same step passes the secant check alone.
+TEST(KickScheme, LongitudinalRateLowersTheLimitBelowTwiceTau) {
+  const std::vector<double> longitudinal{6.0};
+  Bead bead(4.0, Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, -1));
+  EXPECT_NO_THROW(
+      KickScheme(1.0 / 3.0, kG).check_stability(bead.particles, bead.flights, &longitudinal));
+  EXPECT_NO_THROW(KickScheme(0.34, kG).check_stability(bead.particles, bead.flights));
+  try {
+    KickScheme(0.34, kG).check_stability(bead.particles, bead.flights, &longitudinal);
+    FAIL() << "dt_p > 2 m/(dF/ds) must be refused";
+  } catch (const KickUnstable& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("largest stable step 0.3333 s"), std::string::npos) << message;
+    EXPECT_NE(message.find("dF/ds = 6 1/s"), std::string::npos) << message;
+    EXPECT_NE(message.find("tau = m/K = 0.25 s"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace carom

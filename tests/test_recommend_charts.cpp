@@ -7,20 +7,14 @@
 
 #include <sstream>
 
+#include "recommend_support.hpp"
 #include "scenarios/cli/chart_evidence.hpp"
 #include "scenarios/cli/recommend.hpp"
 
 namespace carom {
 namespace {
 
-const std::string kScenes = CAROM_SCENES_DIR;
-
-Scene placed(const std::string& file, const std::vector<std::string>& overrides) {
-  Scene scene = load_scene(kScenes + "/" + file, overrides);
-  scene.settle_time = 0;
-  build_initial_state(scene);
-  return scene;
-}
+using test::placed;
 
 const Advice* find(const std::vector<Advice>& advice, const std::string& name) {
   for (const Advice& a : advice)

@@ -5,6 +5,7 @@
 // the test checks that the output carries them, not their values (the records hold those).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "recommend_support.hpp"
@@ -148,6 +149,88 @@ TEST(RecommendCharts, MonteCarloMapOnBothSidesOfItsLimits) {
   const Scene e = placed("mc_gas.toml", {});
   const std::vector<Advice> events = recommend(e, scene_numbers(e));
   EXPECT_EQ(find(events, "monte carlo"), nullptr);
+}
+
+TEST(RecommendCharts, KickMapGivesTheErrorAndTheStabilityLimitOnBothSides) {
+  // small_bed's relaxation time is about 0.7 s: fluid steps of 2e-4 s (kicks fine), 0.02 s
+  // (relax advised, kicks off by about 0.35 step / tau) and 2 s (beyond kKickLimitLow of 2 tau:
+  // kicks unstable).
+  const auto flight_of = [](const std::vector<std::string>& sets) {
+    const Scene bed = placed("small_bed.toml", sets);
+    const SceneNumbers n = scene_numbers(bed);
+    const std::vector<Advice> advice = recommend(bed, n);
+    return std::make_pair(n, *find(advice, "flight"));
+  };
+  const auto [fine_n, fine] = flight_of({"flight.model=kick"});
+  const auto [mid_n, mid] = flight_of({"flight.model=kick", "gas.time_step=0.02"});
+  const auto [coarse_n, coarse] =
+      flight_of({"flight.model=kick", "gas.time_step=2.0", "time.end=20.0"});
+  ASSERT_GE(fine_n.step_ratio, kKickStepRatio);
+  ASSERT_LT(mid_n.step_ratio, kKickStepRatio);
+  ASSERT_GT(mid_n.step_ratio, 1.0 / (2.0 * evidence::kKickLimitLow));
+  ASSERT_LT(coarse_n.step_ratio, 1.0 / (2.0 * evidence::kKickLimitHigh));
+  for (const Advice* a : {&fine, &mid, &coarse}) {
+    EXPECT_TRUE(has(a->reason, evidence::kKickMap.file)) << a->reason;
+    EXPECT_TRUE(has(a->reason, num(evidence::kKickLimitLow) + "-" + num(evidence::kKickLimitHigh) +
+                                   " of 2 tau"))
+        << a->reason;
+  }
+  EXPECT_EQ(fine.choice, "kick or relax");
+  EXPECT_FALSE(fine.differs);
+  EXPECT_TRUE(has(fine.reason, pct(evidence::kKickErrorPerStep / fine_n.step_ratio)))
+      << fine.reason;
+  EXPECT_EQ(mid.choice, "relax");
+  EXPECT_TRUE(mid.differs);
+  EXPECT_TRUE(
+      has(mid.reason, "off by about " + pct(evidence::kKickErrorPerStep / mid_n.step_ratio)))
+      << mid.reason;
+  EXPECT_FALSE(has(mid.reason, "unstable")) << mid.reason;
+  EXPECT_TRUE(has(coarse.reason, "would be unstable")) << coarse.reason;
+}
+
+TEST(RecommendCharts, SoftSphereMapsJudgeTheStepAndTheStiffnessOnBothSides) {
+  // soft_column: Hertz beads of E = 1e7 Pa falling about 40 mm (the speed scale a fall through
+  // the domain's height), step 1/50 of the contact time.
+  const Scene column = placed("soft_column.toml", {});
+  const SceneNumbers n = scene_numbers(column);
+  ASSERT_TRUE(std::isfinite(n.peak_overlap));
+  ASSERT_LT(n.peak_overlap, 0.1);
+  const std::vector<Advice> advice = recommend(column, n);
+  const Advice* step = find(advice, "soft-sphere step");
+  const Advice* stiff = find(advice, "soft-sphere stiffness");
+  ASSERT_NE(step, nullptr);
+  ASSERT_NE(stiff, nullptr);
+  EXPECT_FALSE(step->differs) << step->reason;
+  EXPECT_FALSE(stiff->differs) << stiff->reason;
+  for (const std::string& part :
+       {std::string(evidence::kSoftStepMap.file), num(evidence::kSoftStepLargestCompleted),
+        num(evidence::kSoftStepFirstStopped), num(evidence::kSoftStepOverlapDefault)})
+    EXPECT_TRUE(has(step->reason, part)) << part << " not in: " << step->reason;
+  for (const std::string& part :
+       {std::string(evidence::kSoftLoadMap.file), num(evidence::kSoftLoadStopped),
+        num(evidence::kSoftLoadCompleted), num(evidence::kSoftLoadHertzEstimate)})
+    EXPECT_TRUE(has(stiff->reason, part)) << part << " not in: " << stiff->reason;
+
+  // A step of half the contact time, beyond the map's first stopped step.
+  const Scene long_step = placed("soft_column.toml", {"soft_sphere.step_fraction=0.5"});
+  const std::vector<Advice> a = recommend(long_step, scene_numbers(long_step));
+  EXPECT_TRUE(find(a, "soft-sphere step")->differs);
+  EXPECT_EQ(find(a, "soft-sphere step")->choice, "step_fraction = 0.02");
+
+  // Beads 1e4 times softer overlap 1e4^(2/5) = 40 times deeper: beyond max_overlap = 0.1.
+  const Scene soft = placed("soft_column.toml", {"species.bead.young_modulus=1e3"});
+  const SceneNumbers sn = scene_numbers(soft);
+  EXPECT_NEAR(sn.peak_overlap / n.peak_overlap, std::pow(1e4, 0.4), 1e-9 * std::pow(1e4, 0.4));
+  ASSERT_GT(sn.peak_overlap, 0.1);
+  const Advice* too_soft = find(recommend(soft, sn), "soft-sphere stiffness");
+  EXPECT_TRUE(too_soft->differs);
+  EXPECT_TRUE(has(too_soft->reason, "overlap detector will stop the run")) << too_soft->reason;
+
+  // An event-driven scene that needs no soft spheres gets neither advice.
+  const Scene gas = placed("dilute_gas.toml", {});
+  const std::vector<Advice> events = recommend(gas, scene_numbers(gas));
+  EXPECT_EQ(find(events, "soft-sphere step"), nullptr);
+  EXPECT_EQ(find(events, "soft-sphere stiffness"), nullptr);
 }
 
 }  // namespace

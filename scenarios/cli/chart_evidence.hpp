@@ -79,4 +79,40 @@ inline constexpr double kFluidMixingErrorCell2 = -0.36, kFluidMixingErrorCell4 =
 /// with lasting_contacts.
 inline constexpr double kFluidOneWayForceLow = 0.43, kFluidOneWayForceHigh = 0.50;
 
+// ---------------------------------------------------------------------------------------------
+/// Kick flights (settling spheres of 0.5, 0.7 and 1 mm, 17 particle steps from 0.01 to 1.5 s,
+/// gas step 0.01 s; scenarios/chart/CHARTS.md, "Stability maps"): the fall's error against the
+/// exact solution of the same drag law, and where the kicks go unstable.
+inline constexpr ChartSource kKickMap{"scenarios/scenes/stability_kick.toml", "2026-12-02",
+                                      "scenarios/chart/CHARTS.md"};
+/// The fall's error is first order: about this times dt_p / tau (1 % at tau / 30, 10 % at
+/// tau / 4).
+inline constexpr double kKickErrorPerStep = 0.35;
+/// The largest stable step, 2 m / (dF/ds) at the terminal velocity, over 2 tau (the drag is
+/// refreshed before each kick; lowest and highest over the three beads: 0.858 / 1.395 s and
+/// 0.487 / 0.756 s). The measured boundaries lay just below it.
+inline constexpr double kKickLimitLow = 0.615, kKickLimitHigh = 0.644;
+
+// ---------------------------------------------------------------------------------------------
+/// The soft-sphere step against the contact time (soft_column.toml, 150 Hertz beads, E = 1e7 Pa,
+/// impacts up to 1.085 m/s; CHARTS.md "Stability maps").
+inline constexpr ChartSource kSoftStepMap{"scenarios/scenes/stability_soft_step.toml", "2026-12-02",
+                                          "scenarios/chart/CHARTS.md"};
+/// Steps (in contact times of the real impacts) up to the first completed, from the second
+/// stopped (the overlap or energy detector), at every declared impact speed.
+inline constexpr double kSoftStepLargestCompleted = 0.41, kSoftStepFirstStopped = 0.45;
+/// The peak overlap (over the radius) at the default step, 1/50 of the contact time, and at
+/// 0.4 of it.
+inline constexpr double kSoftStepOverlapDefault = 0.076, kSoftStepOverlapAt04 = 0.093;
+
+/// The soft-sphere stiffness against the load (soft_column.toml, 400 beads falling onto an
+/// E = 1e7 Pa floor, g = 1 to 100 m/s^2, bead modulus 1e4 to 1e8 Pa; CHARTS.md).
+inline constexpr ChartSource kSoftLoadMap{"scenarios/scenes/stability_soft_load.toml", "2026-12-02",
+                                          "scenarios/chart/CHARTS.md"};
+/// At g = 9.81 m/s^2: the last modulus the overlap detector stopped and the first that
+/// completed (Pa), against the Hertz estimate of a 0.1 R peak overlap after the scene's 59 mm
+/// fall on the floor (Pa): the boundary follows the Hertz impact estimate (E ~ g over the map).
+inline constexpr double kSoftLoadStopped = 3e6, kSoftLoadCompleted = 1e7,
+                        kSoftLoadHertzEstimate = 4.9e6;
+
 }  // namespace carom::evidence

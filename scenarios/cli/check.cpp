@@ -81,8 +81,10 @@ static void describe_gas(const Scene& scene, std::ostringstream& out) {
     out << "\n";
   }
   if (scene.flight.model == FlightModel::Kick)
-    out << "  flight: kick (ballistic, explicit drag kicks every " << short_number(scene.flight.particle_step)
-        << " s; stable only while that is below 2 tau of every particle, checked at every fluid step)\n";
+    out << "  flight: kick (ballistic, explicit drag kicks every "
+        << short_number(scene.flight.particle_step)
+        << " s; stable only while that is below 2 m / (dF/ds) of every particle (less than 2 tau), "
+           "checked at every fluid step)\n";
   else
     out << "  flight: relax (exact flight under gravity and the drag frozen for each fluid step: stable for any "
            "step, events exact)\n";

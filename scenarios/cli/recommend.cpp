@@ -28,12 +28,17 @@ double contact_value(double phi) {
   return (1.0 - p / 2.0) / std::pow(1.0 - p, 3);
 }
 
-/// Hertz contact time of two equal spheres of the species at approach speed v, s.
-double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) {
+/// Hertz peak overlap of two equal elastic spheres of the species meeting at approach speed v,
+/// m: delta_max = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5).
+double hertz_peak_overlap(const Species& s, const ElasticMaterial& m, double v) {
   const double e_star = m.young_modulus / (2.0 * (1.0 - m.poisson_ratio * m.poisson_ratio));
   const double r_star = s.radius() / 2.0, m_star = s.mass() / 2.0;
-  const double overlap = std::pow(15.0 * m_star * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
-  return 2.9432752 * overlap / v;  // VALIDATION.md, "Soft-sphere contacts"
+  return std::pow(15.0 * m_star * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
+}
+
+/// Hertz contact time of two equal spheres of the species at approach speed v, s.
+double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) {
+  return 2.9432752 * hertz_peak_overlap(s, m, v) / v;  // VALIDATION.md, "Soft-sphere contacts"
 }
 
 /// "[chart FILE, measured DATE]": where a recommendation's numbers come from.
@@ -232,6 +237,8 @@ SceneNumbers scene_numbers(const Scene& scene) {
   // (The TC model's contact_time is a numerical remedy, not the beads' contact: not used.)
   if (largest < materials.size() && materials[largest].young_modulus > 0 && n.speed > 0) {
     n.contact_time = hertz_contact_time(system.species[largest], materials[largest], n.speed);
+    n.peak_overlap = hertz_peak_overlap(system.species[largest], materials[largest], n.speed) /
+                     system.species[largest].radius();
     n.contact_source = "Hertz for two " + system.species[largest].name + " at the speed scale";
   } else {
     n.contact_source = "unknown (give young_modulus in [[species]] to estimate it)";
@@ -280,6 +287,66 @@ SceneNumbers scene_numbers(const Scene& scene) {
   return n;
 }
 
+/// The soft-sphere step and stiffness, from the soft-step and stiffness-against-load maps.
+std::vector<Advice> soft_sphere_advice(const Scene& scene, const SceneNumbers& n) {
+  const SoftSphereOptions& o = scene.method.soft_sphere;
+  std::vector<Advice> advice;
+  // The step in contact times: the scene's fraction, or its fixed step over the estimate.
+  const double fraction = o.time_step > 0 ? o.time_step / n.contact_time : o.step_fraction;
+  Advice step{"soft-sphere step", "", "", "", false};
+  step.scene = o.time_step > 0 ? "time_step = " + num(o.time_step) + " s"
+                               : "step_fraction = " + num(o.step_fraction);
+  const std::string map =
+      "the soft-step map completed every step up to " + num(evidence::kSoftStepLargestCompleted) +
+      " of the contact time and stopped every one from " + num(evidence::kSoftStepFirstStopped) +
+      "; the peak overlap was " + num(evidence::kSoftStepOverlapDefault) + " R at 1/50 of it and " +
+      num(evidence::kSoftStepOverlapAt04) + " R at 0.4" + cite(evidence::kSoftStepMap);
+  if (!std::isfinite(fraction)) {
+    step.choice = "step_fraction = " + num(o.step_fraction);
+    step.reason =
+        "the contact time is unknown here (give young_modulus), so a fixed time_step "
+        "cannot be judged; " +
+        map;
+    step.differs = o.time_step > 0;
+  } else if (fraction > evidence::kSoftStepLargestCompleted) {
+    step.choice = "step_fraction = " + num(SoftSphereOptions{}.step_fraction);
+    step.reason = "the step is " + num(fraction) + " of the contact time: " + map;
+    step.differs = true;
+  } else {
+    step.choice = step.scene;
+    step.reason = "the step is " + num(fraction) + " of the contact time, within the stable " +
+                  "range: " + map;
+  }
+  advice.push_back(step);
+
+  Advice stiff{"soft-sphere stiffness", "", "", "", false};
+  stiff.scene = "max_overlap = " + num(o.max_overlap);
+  const std::string load =
+      "; on the stiffness-against-load map the overlap detector's "
+      "boundary followed the Hertz impact estimate (at g = 9.81 m/s^2 it "
+      "stopped " +
+      num(evidence::kSoftLoadStopped) + " Pa and completed " + num(evidence::kSoftLoadCompleted) +
+      " Pa, the estimate " + num(evidence::kSoftLoadHertzEstimate) + " Pa)" +
+      cite(evidence::kSoftLoadMap);
+  if (!std::isfinite(n.peak_overlap)) {
+    stiff.choice = stiff.scene;
+    stiff.reason = "no Hertz estimate without young_modulus" + load;
+  } else if (n.peak_overlap > o.max_overlap) {
+    // Hertz: delta_max ~ E^(-2/5), so the modulus that brings it to max_overlap.
+    stiff.choice = "young_modulus about " + num(std::pow(n.peak_overlap / o.max_overlap, 2.5)) +
+                   " times stiffer";
+    stiff.reason = "a binary impact at the speed scale overlaps " + num(n.peak_overlap) +
+                   " R (Hertz), beyond max_overlap: the overlap detector will stop the run" + load;
+    stiff.differs = true;
+  } else {
+    stiff.choice = stiff.scene;
+    stiff.reason = "a binary impact at the speed scale overlaps " + num(n.peak_overlap) +
+                   " R (Hertz), within max_overlap" + load;
+  }
+  advice.push_back(stiff);
+  return advice;
+}
+
 std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
   std::vector<Advice> advice;
   const bool has_gas = scene.gas.coupling != CouplingLevel::None;
@@ -319,6 +386,8 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
   method.differs = method.choice != method.scene;
   advice.push_back(method);
   if (now == MethodKind::MonteCarlo) advice.push_back(monte_carlo_advice(scene, n));
+  if (now == MethodKind::SoftSphere || method.choice == "soft_sphere")
+    for (Advice& a : soft_sphere_advice(scene, n)) advice.push_back(std::move(a));
   if (!has_gas) {
     advice.push_back({"coupling", "none", "no gas in the scene", "none", false});
     return advice;
@@ -362,15 +431,23 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
         " s moved a small fluidized bed's gas force per weight by at most " +
         pct(evidence::kFluidStepForceError) + " and its mixing rate by at most " +
         pct(evidence::kFluidStepMixingError) + ")" + cite(evidence::kFluidMap);
+    // The kick map: a first-order error of about kKickErrorPerStep dt_p / tau, and instability
+    // from kKickLimitLow-High of 2 tau (the refreshed drag's slope, not 2 tau itself).
+    const std::string kick_map =
+        " (on the kick map the fall's error was about " + num(evidence::kKickErrorPerStep) +
+        " step / tau, and the largest stable step " + num(evidence::kKickLimitLow) + "-" +
+        num(evidence::kKickLimitHigh) + " of 2 tau" + cite(evidence::kKickMap) + ")";
+    const double kick_error = evidence::kKickErrorPerStep / n.step_ratio;
     if (n.step_ratio >= kKickStepRatio) {
       flight.choice = "kick or relax";
       flight.reason = "the shortest relaxation time is " + num(n.step_ratio) +
-                      " fluid steps: kicks are stable and first-order accurate to about " +
-                      num(100.0 / n.step_ratio) + " %, and cheaper to predict" + fluid_step;
+                      " fluid steps: kicks are stable, first-order accurate to about " +
+                      pct(kick_error) + kick_map + ", and cheaper to predict" + fluid_step;
     } else {
+      const bool unstable = n.step_ratio < 1.0 / (2.0 * evidence::kKickLimitLow);
       flight.reason = "the shortest relaxation time is " + num(n.step_ratio) + " fluid steps (< " +
-                      num(kKickStepRatio) + "): kicks would be inaccurate" +
-                      (n.step_ratio < 2 ? " and unstable (step > 2 tau)" : "") +
+                      num(kKickStepRatio) + "): kicks at the fluid step would be " +
+                      (unstable ? "unstable" : "off by about " + pct(kick_error)) + kick_map +
                       "; relax flights are exact for any step" + fluid_step;
       flight.differs = kick;
     }
@@ -426,6 +503,8 @@ std::string describe_recommendation(const SceneNumbers& n, const std::vector<Adv
       << n.contact_source << ")";
   if (std::isfinite(n.contact_time / n.mean_free_time))
     out << ", " << num(n.contact_time / n.mean_free_time) << " of the mean free time";
+  if (std::isfinite(n.peak_overlap))
+    out << "; peak overlap " << num(n.peak_overlap) << " of the radius";
   out << "\n  lasting contacts: " << num(100 * n.lasting_share) << " % of the mass ("
       << n.lasting_reason << ")\n";
   for (const SpeciesNumbers& x : n.species)

@@ -4,6 +4,10 @@
 frequencies per bead present.
 
     /usr/bin/python3 scenarios/plots/duct_sections.py LABEL=RUN_DIR [LABEL=RUN_DIR ...]
+    /usr/bin/python3 scenarios/plots/duct_sections.py --sweep SWEEP_OUT
+
+With --sweep, the completed cases of a sweep (convergent_duct_sweep.toml) are grouped by their
+varied keys, and each number is the mean +- the standard deviation over the group's seeds.
 
 Per section: the solid fraction over the bins whose centres lie within 2 cm of the duct's
 middle (x = 0.15 m), the mean Vz averaged over the section's bins weighted by their solid
@@ -36,7 +40,71 @@ def reduce(summary):
     return rows
 
 
+def read_summary(folder):
+    with open(os.path.join(folder, "summary.json")) as f:
+        return json.load(f)
+
+
+def frequencies_of(summary):
+    cf = summary["analysis"].get("collision_frequency", {})
+    return cf.get("glass-glass"), cf.get("glass@walls")
+
+
+def sweep_groups(out):
+    """{label: [case folder, ...]} of the completed cases, in case order."""
+    groups = {}
+    cases = os.path.join(out, "cases")
+    for name in sorted(os.listdir(cases)):
+        folder = os.path.join(cases, name)
+        try:
+            with open(os.path.join(folder, "result.json")) as f:
+                if json.load(f)["status"] != "completed":
+                    continue
+            with open(os.path.join(folder, "case.json")) as f:
+                case = json.load(f)
+        except (OSError, ValueError, KeyError):
+            continue
+        label = ", ".join(o.split(".")[-1] + " " + o.split("=", 1)[1].strip('"') for o in case["overrides"])
+        groups.setdefault(label, []).append(folder)
+    return groups
+
+
+def pm(values, fmt):
+    values = np.asarray(values, dtype=float)
+    if len(values) < 2:
+        return format(values[0], fmt)
+    return f"{format(values.mean(), fmt)} +- {format(values.std(ddof=1), fmt)}"
+
+
+def main_sweep(out):
+    groups = sweep_groups(out)
+    print("| case (seeds) | CPU s | z (m) | solid fraction, centre 4 cm | mean Vz (m/s) | sd Vx (m/s) | sd Vz (m/s) |")
+    print("|---|---|---|---|---|---|---|")
+    frequencies = []
+    for label, folders in groups.items():
+        summaries = [read_summary(f) for f in folders]
+        cpu = []
+        for f in folders:
+            with open(os.path.join(f, "result.json")) as r:
+                cpu.append(json.load(r)["cpu_seconds"])
+        rows = np.array([reduce(s) for s in summaries])  # case, section, quantity
+        for k in range(rows.shape[1]):
+            head = f"| {label} ({len(folders)}) | {pm(cpu, '.0f')}" if k == 0 else "| |"
+            r = rows[:, k, :]
+            print(f"{head} | {r[0, 0]:.2f} | {pm(r[:, 1], '.3g')} | {pm(r[:, 2], '.2f')} | "
+                  f"{pm(r[:, 3], '.2f')} | {pm(r[:, 4], '.2f')} |")
+        f = np.array([frequencies_of(s) for s in summaries], dtype=float)
+        frequencies.append((label, pm(f[:, 0], ".3g"), pm(f[:, 1], ".3g")))
+    print()
+    print("| case | glass-glass (1/s) | walls (1/s) |")
+    print("|---|---|---|")
+    for label, gg, gw in frequencies:
+        print(f"| {label} | {gg} | {gw} |")
+
+
 def main(argv):
+    if len(argv) == 3 and argv[1] == "--sweep":
+        return main_sweep(argv[2])
     if len(argv) < 2:
         sys.exit(__doc__)
     print("| run | wall s | z (m) | solid fraction, centre 4 cm | mean Vz (m/s) | sd Vx (m/s) | sd Vz (m/s) |")
@@ -44,13 +112,11 @@ def main(argv):
     frequencies = []
     for arg in argv[1:]:
         label, _, folder = arg.partition("=")
-        with open(os.path.join(folder, "summary.json")) as f:
-            summary = json.load(f)
+        summary = read_summary(folder)
         for k, (z, phi, vz, sx, sz) in enumerate(reduce(summary)):
             head = f"| {label} | {summary['wall_seconds']:.0f}" if k == 0 else "| |"
             print(f"{head} | {z:.2f} | {phi:.3g} | {vz:.2f} | {sx:.2f} | {sz:.2f} |")
-        cf = summary["analysis"].get("collision_frequency", {})
-        frequencies.append((label, cf.get("glass-glass"), cf.get("glass@walls")))
+        frequencies.append((label, *frequencies_of(summary)))
     print()
     print("| run | glass-glass (1/s) | walls (1/s) |")
     print("|---|---|---|")

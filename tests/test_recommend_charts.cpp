@@ -104,9 +104,9 @@ Scene mc_gas(double phi, const std::string& contact_value, const std::string& pa
 
 TEST(RecommendCharts, MonteCarloMapOnBothSidesOfItsLimits) {
   // The estimate is the larger of the box's solid fraction and that around a typical particle
-  // (sample cells of 4 diameters weighted by their counts), which in a dilute gas exceeds the
-  // box's by the cells' counting noise (a factor 1 + 1/<count>: 2.6 at phi = 0.005): the dilute
-  // scene is the map's most dilute one, the others a factor of 2-3 inside the limits.
+  // (the other particles in its sample cell of 4 diameters), which scatters about the box's by
+  // its sampling error: the dilute scene is the map's most dilute one, the others a factor of
+  // 2-3 inside the limits.
   const double dilute = 0.005;
   const double middle =
       std::sqrt(evidence::kMonteCarloPlainLimit * evidence::kMonteCarloEnskogLimit);

@@ -1,12 +1,14 @@
 #include "scenarios/cli/recommend.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "fluid/drag.hpp"
-#include "scenarios/analysis/local_fields.hpp"
 #include "scenarios/cli/chart_evidence.hpp"
 
 namespace carom {
@@ -39,6 +41,42 @@ double hertz_peak_overlap(const Species& s, const ElasticMaterial& m, double v) 
 /// Hertz contact time of two equal spheres of the species at approach speed v, s.
 double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) {
   return 2.9432752 * hertz_peak_overlap(s, m, v) / v;  // VALIDATION.md, "Soft-sphere contacts"
+}
+
+/// The solid fraction around a typical particle: the domain cut into cells of about `edge`
+/// (whole cells, at least one per axis), and for each particle the solid volume of the OTHER
+/// particles in its cell over the cell's volume, averaged over the particles. Leaving the
+/// particle itself out makes it unbiased for a uniform random placement (a Poisson count N has
+/// E[N (N - 1)] = <N>^2), where counting it raised a dilute gas's estimate by 1 + 1/<N>. Only
+/// the occupied cells are visited (the particles sorted by cell).
+double solid_fraction_around_particles(const System& system, double edge) {
+  const ParticleStore& p = system.particles;
+  const Domain& domain = system.domain;
+  std::array<double, 3> size{};
+  for (int k = 0; k < 3; ++k) {
+    const double cells = std::max(1.0, std::floor(domain.length()[k] / edge));
+    size[k] = domain.length()[k] / cells;
+  }
+  using Cell = std::array<std::int64_t, 3>;
+  std::vector<std::pair<Cell, std::size_t>> order(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    Cell c{};
+    for (int k = 0; k < 3; ++k)
+      c[k] = static_cast<std::int64_t>(std::floor((p.position[i][k] - domain.lower[k]) / size[k]));
+    order[i] = {c, i};
+  }
+  std::sort(order.begin(), order.end());
+  const double volume = size[0] * size[1] * size[2];
+  double weighted = 0.0;
+  for (std::size_t begin = 0; begin < order.size();) {
+    std::size_t end = begin;
+    double solid = 0.0;
+    for (; end < order.size() && order[end].first == order[begin].first; ++end)
+      solid += system.species[p.species[order[end].second]].volume();
+    weighted += static_cast<double>(end - begin - 1) * solid / volume;
+    begin = end;
+  }
+  return weighted / static_cast<double>(p.size());
 }
 
 /// "[chart FILE, measured DATE]": where a recommendation's numbers come from.
@@ -115,32 +153,7 @@ SceneNumbers scene_numbers(const Scene& scene) {
   }
   n.solid_fraction = solid / domain.volume();
   const double sauter = d2 > 0 ? d3 / d2 : 0.0;
-  if (p.size() > 0) {
-    std::array<int, 3> cells{};
-    for (int k = 0; k < 3; ++k)
-      cells[k] = std::max(1, static_cast<int>(std::floor(domain.length()[k] / (4.0 * d_max))));
-    std::vector<Vec3> r(p.position.begin(),
-                        p.position.begin() + static_cast<std::ptrdiff_t>(p.size()));
-    std::vector<Vec3> v(p.velocity.begin(),
-                        p.velocity.begin() + static_cast<std::ptrdiff_t>(p.size()));
-    std::vector<std::uint32_t> sp(p.species.begin(),
-                                  p.species.begin() + static_cast<std::ptrdiff_t>(p.size()));
-    std::vector<double> a(p.radius.begin(),
-                          p.radius.begin() + static_cast<std::ptrdiff_t>(p.size()));
-    const LocalFields f =
-        local_fields(r, v, sp, a, S, SampleGrid{domain.lower, domain.upper, cells});
-    // The solid fraction around a typical particle: the cells' fractions weighted by their
-    // particle counts (the densest single cell is noisy: a cell of 4 diameters holds few).
-    double weighted = 0.0, particles = 0.0;
-    for (std::size_t c = 0; c < f.grid.size(); ++c) {
-      double count = 0.0;
-      for (std::size_t s = 0; s < S; ++s) count += static_cast<double>(f.count[f.at(c, s)]);
-      if (count == 0.0 || !std::isfinite(f.solid_fraction(c))) continue;
-      weighted += count * f.solid_fraction(c);
-      particles += count;
-    }
-    n.solid_fraction_seen = particles > 0 ? weighted / particles : 0.0;
-  }
+  if (p.size() > 0) n.solid_fraction_seen = solid_fraction_around_particles(system, 4.0 * d_max);
 
   // The gas: inlet velocity, relaxation times, Stokes numbers, U_mf.
   const GasSettings& gas = scene.gas;

@@ -30,8 +30,9 @@ struct SpeciesNumbers {
 struct SceneNumbers {
   std::vector<SpeciesNumbers> species;
   double solid_fraction = 0;  ///< Solid volume / domain volume.
-  /// Solid fraction around a typical particle at t = 0: that of sample cells of about 4 largest
-  /// diameters, weighted by their particle counts.
+  /// Solid fraction around a typical particle at t = 0: the solid volume of the other particles
+  /// in its sample cell of about 4 largest diameters over the cell's volume, averaged over the
+  /// particles (unbiased for a uniform random placement).
   double solid_fraction_seen = 0;
   double speed = NAN;  ///< Collision speed scale, m/s (`speed_source` says which).
   std::string speed_source;

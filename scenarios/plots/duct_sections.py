@@ -64,7 +64,8 @@ def sweep_groups(out):
                 case = json.load(f)
         except (OSError, ValueError, KeyError):
             continue
-        label = ", ".join(o.split(".")[-1] + " " + o.split("=", 1)[1].strip('"') for o in case["overrides"])
+        label = ", ".join(key.split(".")[-1] + " " + value.strip('"')
+                          for key, value in (o.split("=", 1) for o in case["overrides"]))
         groups.setdefault(label, []).append(folder)
     return groups
 
@@ -78,7 +79,7 @@ def pm(values, fmt):
 
 def main_sweep(out):
     groups = sweep_groups(out)
-    print("| case (seeds) | CPU s | z (m) | solid fraction, centre 4 cm | mean Vz (m/s) | sd Vx (m/s) | sd Vz (m/s) |")
+    print("| case (seeds) | CPU s | z (m) | solid fraction x 1e3, centre 4 cm | mean Vz (m/s) | sd Vx (m/s) | sd Vz (m/s) |")
     print("|---|---|---|---|---|---|---|")
     frequencies = []
     for label, folders in groups.items():
@@ -91,10 +92,10 @@ def main_sweep(out):
         for k in range(rows.shape[1]):
             head = f"| {label} ({len(folders)}) | {pm(cpu, '.0f')}" if k == 0 else "| |"
             r = rows[:, k, :]
-            print(f"{head} | {r[0, 0]:.2f} | {pm(r[:, 1], '.3g')} | {pm(r[:, 2], '.2f')} | "
+            print(f"{head} | {r[0, 0]:.2f} | {pm(r[:, 1] * 1e3, '.2f')} | {pm(r[:, 2], '.2f')} | "
                   f"{pm(r[:, 3], '.2f')} | {pm(r[:, 4], '.2f')} |")
         f = np.array([frequencies_of(s) for s in summaries], dtype=float)
-        frequencies.append((label, pm(f[:, 0], ".3g"), pm(f[:, 1], ".3g")))
+        frequencies.append((label, pm(f[:, 0], ".2f"), pm(f[:, 1], ".2f")))
     print()
     print("| case | glass-glass (1/s) | walls (1/s) |")
     print("|---|---|---|")

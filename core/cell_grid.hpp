@@ -82,6 +82,14 @@ class HierarchicalGrid {
   /// Asks the CPU to start loading particle i's place (a hint; changes nothing). Always
   /// inlined: GCC deletes calls to a function of prefetches alone.
   [[gnu::always_inline]] void prefetch(std::int32_t i) const { __builtin_prefetch(&place_[i]); }
+  /// Asks the CPU to start loading the first particles of the cells of i's own-level block
+  /// (what the own-level scan reads first; a hint, changes nothing).
+  [[gnu::always_inline]] void prefetch_own_block(std::int32_t i) const {
+    const Place& at = place_[i];
+    const Level& grid = levels_[at.level];
+    const std::int32_t* centre = grid.head.data() + flat_index(at.level, at.cell);
+    for (const std::int32_t offset : grid.block_offsets) __builtin_prefetch(centre + offset);
+  }
   /// How many particles come before i in its cell's list (0: the first). Scans visit a cell's
   /// particles in this order, and a relax prediction's round-off depends on it, so a restored
   /// grid must keep it (insert_at the particles in order of decreasing place).

@@ -424,6 +424,7 @@ void EventDrivenEngine::process_particle_event(std::int32_t i) {
                             {system_.particles.id[i]});
   switch (event.kind) {
     case EventKind::Pair:
+      if (agenda_.size() >= kLargeSystem) prefetch_pair(i, event.partner);
       if (counter_[event.partner] != event.partner_counter) {
         ++statistics_.invalid_events;
         predict<Flight>(i, /*new_trajectory=*/false);

@@ -256,6 +256,28 @@ TEST_F(Sweep, FailingCaseIsRecordedAndTheOthersComplete) {
       << "a completed case was rerun";
 }
 
+// The check before the runs places every case as `carom check` does, without its settling run:
+// a case whose settling run fails is recorded as that case's failure and the other completes
+// (before, every case's settling ran once in the check and again in its run, and one failing
+// settle refused the whole sweep).
+TEST_F(Sweep, SettlingRunsOnlyInTheirCases) {
+  file("settle.toml",
+       "[sweep]\nscene = \"" + kGas +
+           "\"\nseeds = [1]\n[sweep.set]\ntime.end = 0.5\ninitial.settle_time = 2.0\n"
+           "collisions.collapse.stall_collisions = 2\n"
+           "[[sweep.vary]]\nkey = \"collisions.collapse.stall_window\"\nvalues = [0.0, 1000.0]\n");
+  ASSERT_EQ(carom("sweep settle.toml --dry-run"), 0) << out_;
+  ASSERT_EQ(carom("sweep settle.toml --jobs 2"), 1) << out_;
+  const Csv cases = read_csv(dir_ / "settle.out" / "summary.csv");
+  ASSERT_EQ(cases.rows.size(), 2u);
+  EXPECT_EQ(cases.at(0, "status"), "completed");
+  EXPECT_NE(cases.at(1, "status"), "completed");
+  EXPECT_NE(case_result(dir_ / "settle.out" / "cases" / "0001")["message"].get<std::string>().find(
+                "settl"),
+            std::string::npos)
+      << case_result(dir_ / "settle.out" / "cases" / "0001");
+}
+
 // SIGINT to a sweep while its second case runs: exit 130, that case checkpointed, the third
 // never started. The same command again: the first case is not rerun (its summary.json is
 // byte for byte the same), the second is resumed from its checkpoint, the third runs, and the

@@ -281,9 +281,17 @@ TEST(MeshGeometry, SolidNeedsAClosedOrientedSurface) {
   const MeshWall solid(cube, true);
   EXPECT_NEAR(solid.enclosed_volume(), 1.0, 1e-15);
   EXPECT_EQ(solid.orientation(), 1.0);
+  // Inside the solid (and clear of the surface) the gap is minus the overlap with the solid;
+  // outside, or for an open mesh, the distance minus the radius.
+  EXPECT_NEAR(solid.gap(Vec3(0.5, 0.5, 0.4), 0.1), -0.5, 1e-15);
+  EXPECT_NEAR(solid.gap(Vec3(0.5, 0.5, 1.4), 0.1), 0.3, 1e-15);
+  EXPECT_NEAR(solid.gap(Vec3(0.5, 0.5, 0.95), 0.1), -0.05, 1e-15);  // touching from inside
+  EXPECT_NEAR(MeshWall(cube, false).gap(Vec3(0.5, 0.5, 0.4), 0.1), 0.3, 1e-15);
   std::vector<Triangle> inward = cube;
   for (Triangle& t : inward) std::swap(t[1], t[2]);
   EXPECT_EQ(MeshWall(inward, true).orientation(), -1.0);
+  EXPECT_TRUE(MeshWall(inward, true).inside_solid(Vec3(0.3, 0.6, 0.2)));
+  EXPECT_FALSE(MeshWall(inward, true).inside_solid(Vec3(0.3, 0.6, 1.2)));
   EXPECT_NEAR(MeshWall(inward, true).enclosed_volume(), 1.0, 1e-15);
   std::vector<Triangle> open = cube;
   open.pop_back();

@@ -107,6 +107,27 @@ MeshWall::Closest MeshWall::closest(const Vec3& r) const {
   return best;
 }
 
+bool MeshWall::inside_solid(const Vec3& r) const {
+  if (!solid_ || bounds_.distance(r) > 0.0) return false;
+  // Van Oosterom and Strackee's solid angle of each triangle seen from r.
+  constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+  double angle = 0.0;
+  for (const Triangle& t : faces_) {
+    const Vec3 a = t[0] - r, b = t[1] - r, c = t[2] - r;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    angle += 2.0 * std::atan2(a.dot(b.cross(c)),
+                              la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la);
+  }
+  return orientation_ * angle / kFourPi > 0.5;
+}
+
+double MeshWall::gap(const Vec3& r, double a) const {
+  const double distance = closest(r).distance;
+  // Within a of the surface the sphere touches it: no need to know the side.
+  if (distance < a || !inside_solid(r)) return distance - a;
+  return -(distance + a);
+}
+
 Vec3 MeshWall::contact_normal(const Vec3& r) const {
   return polygons_[closest(r).triangle].contact_normal(r);
 }

@@ -89,8 +89,15 @@ class MeshWall {
   /// The closest point of the surface to r (the least over the triangles, culled by their boxes).
   Closest closest(const Vec3& r) const;
 
-  /// Gap between a sphere (centre r, radius a) and the surface, m (> 0 apart).
-  double gap(const Vec3& r, double a) const { return closest(r).distance - a; }
+  /// Whether r lies inside the solid (solid meshes; false for open ones): the winding number
+  /// of the surface about r (the sum of the triangles' signed solid angles over 4 pi) is 1
+  /// inside, 0 outside; taken as inside above 1/2.
+  bool inside_solid(const Vec3& r) const;
+
+  /// Gap between a sphere (centre r, radius a) and the surface, m (> 0 apart): the distance
+  /// to the surface minus a; for a sphere clear of the surface but wholly inside a solid mesh,
+  /// -(distance + a) (its overlap with the solid), so that placements and checks refuse it.
+  double gap(const Vec3& r, double a) const;
   /// Unit normal at the contact, from the closest point towards a sphere centred at r.
   Vec3 contact_normal(const Vec3& r) const;
 

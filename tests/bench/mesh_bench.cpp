@@ -44,7 +44,8 @@ std::vector<Triangle> sphere() {
   constexpr int lon = 24, lat = 11;
   const double pi = 3.14159265358979323846;
   auto at = [&](int i, int j) {
-    const double theta = pi * j / lat, phi = 2 * pi * i / lon;
+    if (j == 0 || j == lat) return Vec3(0, 0, j == 0 ? 0.1 : 0.0);  // the poles, exactly
+    const double theta = pi * j / lat, phi = 2 * pi * (i % lon) / lon;
     return Vec3(0.05 * std::sin(theta) * std::cos(phi), 0.05 * std::sin(theta) * std::sin(phi),
                 0.05 + 0.05 * std::cos(theta));
   };

@@ -2,7 +2,7 @@
 /// Fixed boundaries: a closed set of shapes (core/walls/), each shape-dependent operation a visit
 /// over them, so that a new shape is one file and the compiler names every operation it lacks.
 /// Shapes: infinite planes of any orientation, the inside of a vertical cylinder, the inside of
-/// a vertical cone, finite convex polygons (two-sided plates).
+/// a vertical cone, finite convex polygons (two-sided plates), triangle meshes (from STL).
 #include <string>
 #include <variant>
 #include <vector>
@@ -12,13 +12,14 @@
 #include "vec3.hpp"
 #include "walls/cone.hpp"
 #include "walls/cylinder.hpp"
+#include "walls/mesh.hpp"
 #include "walls/plane.hpp"
 #include "walls/polygon.hpp"
 
 namespace carom {
 
 /// The geometry of a wall: one of the shapes of core/walls/.
-using WallShape = std::variant<PlaneWall, CylinderWall, ConeWall, PolygonWall>;
+using WallShape = std::variant<PlaneWall, CylinderWall, ConeWall, PolygonWall, MeshWall>;
 
 /// A wall is a sphere of infinite mass and radius for the collision law.
 struct Wall {
@@ -46,6 +47,13 @@ struct Wall {
   /// walls/polygon.hpp). Throws std::invalid_argument when they are not a convex polygon.
   static Wall polygon(std::string label, std::vector<Vec3> vertices) {
     return Wall{std::move(label), PolygonWall(std::move(vertices))};
+  }
+
+  /// The surface of these triangles (m; see walls/mesh.hpp), closed around solid material when
+  /// `solid`. Throws std::invalid_argument for a degenerate triangle, or a solid mesh that is
+  /// not closed and consistently oriented.
+  static Wall mesh(std::string label, std::vector<Triangle> triangles, bool solid) {
+    return Wall{std::move(label), MeshWall(std::move(triangles), solid)};
   }
 
   /// Gap between a sphere (centre r, radius a) and the wall surface: > 0 when apart, m.
@@ -83,7 +91,7 @@ inline double relax_wall_contact(const Wall& wall, const Vec3& r, const Vec3& v,
 /// Throws std::invalid_argument (naming the wall) when a wall cannot be simulated under this
 /// gravity (m/s^2) in this domain: a cylinder or a cone needs gravity along its axis (z), a
 /// cone a walled z axis and its apex outside the domain, a polygon on a periodic axis must be
-/// a strip across the period.
+/// a strip across the period, a mesh needs walled axes.
 inline void validate_walls(const std::vector<Wall>& walls, const Vec3& gravity,
                            const Domain& domain) {
   for (const Wall& wall : walls)

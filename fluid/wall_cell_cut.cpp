@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "fluid/mesh_solid_volume.hpp"
+
 namespace carom {
 
 int plane_axis(const PlaneWall& wall) {
@@ -125,6 +127,16 @@ double inside_fraction(const ConeWall& wall, const CellCut& cell) {
         adaptive(integrand, 0.0, 1.0, gauss8(integrand, 0.0, 1.0), 1e-13 * rectangle * dz, 20);
   }
   return std::clamp(volume / (rectangle * height), 0.0, 1.0);
+}
+
+double inside_fraction(const MeshWall& wall, const CellCut& cell) {
+  if (!wall.solid()) return 1.0;
+  const double solid = mesh_solid_volume(wall, cell.lower, cell.upper, cell.cutting);
+  if (solid == 0.0) return 1.0;
+  const double box = cell.cutting.empty()
+                         ? (cell.upper - cell.lower).prod()
+                         : box_halfspaces_volume(cell.lower, cell.upper, cell.cutting);
+  return box > 0.0 ? std::clamp(1.0 - solid / box, 0.0, 1.0) : 1.0;
 }
 
 }  // namespace carom

@@ -7,7 +7,8 @@
 ///   2. cut_cell: oblique planes that cut the clipped box are collected as half-spaces (the box
 ///      is then clipped by all of them at once), or mark the cell as wholly outside;
 ///   3. inside_fraction: the fraction of the clipped box inside a curved wall (a cylinder, a
-///      cone), which multiplies the volume; 1 for planes and polygons.
+///      cone) or outside a solid mesh, which multiplies the volume; 1 for planes, polygons and
+///      open meshes.
 /// The passes run in this order whatever the order of the walls.
 #include <vector>
 
@@ -37,6 +38,9 @@ inline void clip_cell(const ConeWall& /*wall*/, CellCut& /*cell*/) {}
 /// Pass 1: a polygon (a plate of zero thickness) does not clip the box.
 inline void clip_cell(const PolygonWall& /*wall*/, CellCut& /*cell*/) {}
 
+/// Pass 1: a mesh does not clip the box.
+inline void clip_cell(const MeshWall& /*wall*/, CellCut& /*cell*/) {}
+
 /// Pass 2: an oblique plane wholly past the box marks it outside; one through it is collected.
 void cut_cell(const PlaneWall& wall, CellCut& cell);
 /// Pass 2: a cylinder is no half-space.
@@ -45,6 +49,9 @@ inline void cut_cell(const CylinderWall& /*wall*/, CellCut& /*cell*/) {}
 inline void cut_cell(const ConeWall& /*wall*/, CellCut& /*cell*/) {}
 /// Pass 2: a polygon is no half-space.
 inline void cut_cell(const PolygonWall& /*wall*/, CellCut& /*cell*/) {}
+
+/// Pass 2: a mesh is no half-space.
+inline void cut_cell(const MeshWall& /*wall*/, CellCut& /*cell*/) {}
 
 /// Pass 3: a plane has been applied by passes 1 and 2: fraction 1.
 inline double inside_fraction(const PlaneWall& /*wall*/, const CellCut& /*cell*/) {
@@ -65,5 +72,10 @@ double inside_fraction(const ConeWall& wall, const CellCut& cell);
 inline double inside_fraction(const PolygonWall& /*wall*/, const CellCut& /*cell*/) {
   return 1.0;
 }
+
+/// Pass 3: an open mesh (plates) takes no volume, fraction 1; a solid mesh removes the clipped
+/// box's part inside the solid (exact tetrahedron decomposition, fluid/mesh_solid_volume.hpp):
+/// the fraction 1 - solid / clipped box.
+double inside_fraction(const MeshWall& wall, const CellCut& cell);
 
 }  // namespace carom

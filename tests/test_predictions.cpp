@@ -96,6 +96,9 @@ struct Oracle {
     }
     // gap = distance to the plate - a, 1-Lipschitz in the centre: |gap'| <= |v(s)|.
     double operator()(const PolygonWall&) const { return v.norm() + g.norm() * horizon; }
+    // The same for a mesh (the distance to a union of triangles is 1-Lipschitz too; outside a
+    // solid, where the particles are).
+    double operator()(const MeshWall&) const { return v.norm() + g.norm() * horizon; }
   };
   double wall_rate_bound(std::size_t i, std::size_t w) const {
     return std::visit(WallRateBound{v0[i], sim.system().flight.gravity, horizon},

@@ -91,6 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
                                            ShippedScene{"bubbling_bed.toml", 2000}, ShippedScene{"fines_bed.toml", 3207},
                                            ShippedScene{"hopper.toml", 200}, ShippedScene{"duct_flow.toml", 0},
                                            ShippedScene{"convergent_duct.toml", 0},
+                                           ShippedScene{"convergent_duct_mesh.toml", 0},
                                            ShippedScene{"narrow_tube.toml", 400}),
                          [](const auto& info) {
                            std::string name = info.param.file;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -108,6 +110,43 @@ void read_polygon(TableReader& w, const std::string& name, Scene& scene) {
   scene.system.walls.push_back(std::move(wall));
 }
 
+/// A [[walls]] type = "mesh": the STL file (relative to the scene's folder) in metres, open or solid.
+void read_mesh(TableReader& w, const std::string& name, Scene& scene) {
+  const std::string written = w.required_string("file");
+  if (written.empty()) w.fail("file", "must not be empty (an STL file, ASCII or binary)");
+  std::filesystem::path path(written);
+  if (path.is_relative()) path = std::filesystem::path(scene.file).parent_path() / path;
+  StlUnits units;
+  units.scale = w.number("scale", 1.0,
+                         Range::positive("metres per unit of the STL file (0.001: millimetres)"));
+  units.translate =
+      w.vector3("translate", Vec3::Zero(), Range::any("added to every vertex after scaling, m"));
+  const bool solid = w.boolean("solid", false);
+  std::vector<Triangle> triangles;
+  try {
+    triangles = read_stl(path.string(), units);
+  } catch (const StlError& e) {
+    w.fail("file", std::string("cannot be used: ") + e.what());
+  }
+  std::optional<Wall> wall;
+  try {
+    wall = Wall::mesh(name, std::move(triangles), solid);
+  } catch (const std::invalid_argument& e) {
+    w.fail(solid ? "solid" : "file",
+           std::string("(") + path.string() + ") " + e.what() +
+               (solid ? " (solid = true needs a closed surface: every edge shared by exactly two "
+                        "triangles running along it in opposite senses)"
+                      : ""));
+  }
+  try {
+    std::get<MeshWall>(wall->shape)
+        .validate(name, scene.system.flight.gravity, scene.system.domain);
+  } catch (const std::invalid_argument& e) {
+    w.fail("file", std::string("does not fit the domain: ") + e.what());
+  }
+  scene.system.walls.push_back(std::move(*wall));
+}
+
 }  // namespace
 
 void read_walls(TableReader& root, Scene& scene) {
@@ -130,7 +169,7 @@ void read_walls(TableReader& root, Scene& scene) {
     for (const Wall& other : scene.system.walls)
       if (other.name == name)
         w.fail("name", "is already the name of a wall (box walls are x_low, x_high, y_low, ...)");
-    const std::string type = w.required_string("type", {"plane", "cylinder", "cone", "polygon"});
+    const std::string type = w.required_string("type", {"plane", "cylinder", "cone", "polygon", "mesh"});
     if (type == "plane") {
       const Vec3 point = w.required_vector3("point", Range::any("a point on the plane, m"));
       const Vec3 normal =
@@ -144,8 +183,10 @@ void read_walls(TableReader& root, Scene& scene) {
       scene.system.walls.push_back(Wall::cylinder(name, axis.x(), axis.y(), radius));
     } else if (type == "cone") {
       read_cone(w, name, scene);
-    } else {
+    } else if (type == "polygon") {
       read_polygon(w, name, scene);
+    } else {
+      read_mesh(w, name, scene);
     }
     w.finish();
   }

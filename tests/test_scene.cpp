@@ -9,6 +9,7 @@
 
 #include "events/event_driven/engine.hpp"
 #include "events/method_factory.hpp"
+#include "scenarios/chart/chart_spec.hpp"
 #include "scenarios/scene/scene.hpp"
 
 using namespace carom;
@@ -82,21 +83,36 @@ TEST_P(ShippedScenes, ParseBuildAndValidate) {
   EXPECT_NO_THROW(EventDrivenEngine(scene.system, scene.method.event_driven));
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
-                         ::testing::Values(ShippedScene{"elastic_gas.toml", 990}, ShippedScene{"haff_cooling.toml", 1528},
-                                           ShippedScene{"bidisperse_gas.toml", 1049},
-                                           ShippedScene{"settling_column.toml", 400},
-                                           ShippedScene{"settling_sphere.toml", 1}, ShippedScene{"packed_bed.toml", 1345},
-                                           ShippedScene{"fluidized_bed.toml", 400}, ShippedScene{"column_1d.toml", 300},
-                                           ShippedScene{"bubbling_bed.toml", 2000}, ShippedScene{"fines_bed.toml", 3207},
-                                           ShippedScene{"hopper.toml", 200}, ShippedScene{"duct_flow.toml", 0},
-                                           ShippedScene{"convergent_duct.toml", 0},
-                                           ShippedScene{"convergent_duct_mesh.toml", 0},
-                                           ShippedScene{"narrow_tube.toml", 400}),
-                         [](const auto& info) {
-                           std::string name = info.param.file;
-                           return name.substr(0, name.find('.'));
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, ShippedScenes,
+    ::testing::Values(
+        ShippedScene{"elastic_gas.toml", 990}, ShippedScene{"haff_cooling.toml", 1528},
+        ShippedScene{"bidisperse_gas.toml", 1049}, ShippedScene{"settling_column.toml", 400},
+        ShippedScene{"settling_sphere.toml", 1}, ShippedScene{"packed_bed.toml", 1345},
+        ShippedScene{"fluidized_bed.toml", 400}, ShippedScene{"column_1d.toml", 300},
+        ShippedScene{"bubbling_bed.toml", 2000}, ShippedScene{"fines_bed.toml", 3207},
+        ShippedScene{"hopper.toml", 200}, ShippedScene{"duct_flow.toml", 0},
+        ShippedScene{"convergent_duct.toml", 0}, ShippedScene{"convergent_duct_mesh.toml", 0},
+        ShippedScene{"convergent_duct_air.toml", 0}, ShippedScene{"narrow_tube.toml", 400}),
+    [](const auto& info) {
+      std::string name = info.param.file;
+      return name.substr(0, name.find('.'));
+    });
+
+// Every shipped chart file reads, and each of its cases makes a valid scene (what a chart
+// checks before it runs, without placing the particles).
+TEST(ShippedCharts, EveryCaseMakesAScene) {
+  for (const char* file : {"dilute_gas_chart.toml", "cloud_drag_chart.toml",
+                           "narrow_tube_chart.toml", "fines_bed_chart.toml"}) {
+    const ChartSpec chart = read_chart(std::string(CAROM_SCENES_DIR) + "/" + file);
+    const SweepSpec sweep = chart_sweep(chart);
+    const std::vector<SweepCase> cases = sweep.cases();
+    EXPECT_EQ(cases.size(), chart.variants.size() * chart.seeds.size()) << file;
+    for (const SweepCase& c : cases)
+      EXPECT_NO_THROW(load_scene(sweep.scene, c.overrides, c.seed, c.origins))
+          << file << " case " << c.index;
+  }
+}
 
 TEST(Scene, ReadsEverySection) {
   const std::string text = kBase +

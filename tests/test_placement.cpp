@@ -2,6 +2,7 @@
 // (initial.from_file) and beds settled before t = 0 (initial.settle_time).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -205,6 +206,36 @@ TEST(Settling, SmallColumnComesToRest) {
   }
 }
 
+// initial.settle_method = "event_driven": a soft-sphere scene settles by exact events (0.12 s:
+// the lowest beads land after 0.064 s, so contacts shape the bed), to the
+// very state (bit for bit) the event-driven scene settles to, so that a chart's methods start
+// from the same bed; without the key the soft spheres settle themselves, to another state.
+TEST(Settling, EventDrivenSettlingGivesEveryMethodTheSameBed) {
+  const std::string scene_text =
+      column_scene("bead", 1e-3, "fill = { count = 50, region = \"top\" }\n") +
+      "[regions.top]\nmin = [0.0, 0.0, 0.02]\nmax = [0.01, 0.01, 0.04]\n[initial]\nsettle_time = 0.12\n";
+  Scene events = parse_scene(scene_text, "column.toml");
+  build_initial_state(events);
+  const std::vector<std::string> soft = {"method.kind=\"soft_sphere\"", "species.bead.young_modulus=1e8"};
+  std::vector<std::string> soft_by_events = soft;
+  soft_by_events.push_back("initial.settle_method=\"event_driven\"");
+  Scene same = parse_scene(scene_text, "column.toml", soft_by_events);
+  build_initial_state(same);
+  Scene own = parse_scene(scene_text, "column.toml", soft);
+  build_initial_state(own);
+  const ParticleStore& e = events.system.particles;
+  ASSERT_EQ(same.system.particles.size(), e.size());
+  ASSERT_EQ(own.system.particles.size(), e.size());
+  double moved = 0.0;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    EXPECT_EQ(same.system.particles.position[i], e.position[i]) << "particle " << i;
+    EXPECT_EQ(same.system.particles.velocity[i], e.velocity[i]) << "particle " << i;
+    EXPECT_EQ(same.system.particles.spin[i], e.spin[i]) << "particle " << i;
+    moved = std::max(moved, (own.system.particles.position[i] - e.position[i]).norm());
+  }
+  EXPECT_GT(moved, 1e-6) << "the soft-sphere settling should reach another state (m)";
+}
+
 TEST(Settling, CollapseNamesTheKeyAndHintsAtContactTime) {
   std::string text = column_scene("bead", 1e-3, "fill = { count = 50, arrangement = \"fcc\" }\n");
   text.replace(text.find("collapse = { model = \"tc\", contact_time = 1e-5 }\n"), 49, "collapse = { stall_collisions = 50 }\n");
@@ -217,4 +248,8 @@ TEST(Settling, KeysAreChecked) {
                    {"bad.toml:16", "initial.settle_time = -1", "[0, inf)"});
   expect_fragments(error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_zero_velocity = true\n"),
                    {"bad.toml:16", "initial.settle_zero_velocity", "settle_time"});
+  expect_fragments(error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_method = \"event_driven\"\n"),
+                   {"bad.toml:16", "initial.settle_method", "settle_time"});
+  expect_fragments(error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_time = 0.1\nsettle_method = \"soft\"\n"),
+                   {"bad.toml:17", "initial.settle_method", "\"scene\", \"event_driven\""});
 }

@@ -22,6 +22,8 @@ const Advice* find(const std::vector<Advice>& advice, const std::string& name) {
     if (a.topic == name) return &a;
   return nullptr;
 }
+// A pointer into a temporary list would dangle (ASan caught one): keep the list in a variable.
+const Advice* find(std::vector<Advice>&& advice, const std::string& name) = delete;
 
 /// recommend.cpp's number format: three significant digits.
 std::string num(double x) {
@@ -222,7 +224,8 @@ TEST(RecommendCharts, SoftSphereMapsJudgeTheStepAndTheStiffnessOnBothSides) {
   const SceneNumbers sn = scene_numbers(soft);
   EXPECT_NEAR(sn.peak_overlap / n.peak_overlap, std::pow(1e4, 0.4), 1e-9 * std::pow(1e4, 0.4));
   ASSERT_GT(sn.peak_overlap, 0.1);
-  const Advice* too_soft = find(recommend(soft, sn), "soft-sphere stiffness");
+  const std::vector<Advice> soft_advice = recommend(soft, sn);
+  const Advice* too_soft = find(soft_advice, "soft-sphere stiffness");
   EXPECT_TRUE(too_soft->differs);
   EXPECT_TRUE(has(too_soft->reason, "overlap detector will stop the run")) << too_soft->reason;
 

@@ -145,6 +145,9 @@ struct Scene {
   std::optional<InitialFile> from_file;  ///< Particles read from an HDF5 file, placed after the listed ones.
   double settle_time = 0;     ///< Settling run before t = 0 (gravity, walls, laws, collapse settings), s; 0: none.
   bool settle_zero_velocity = false;  ///< Zero velocities and spins after settling.
+  /// Settle with exact events whatever the scene's method (initial.settle_method =
+  /// "event_driven"), so that every method of a comparison starts from the same bed.
+  bool settle_by_events = false;
   std::string settle_where;   ///< "file:line" of initial.settle_time, for messages.
   FlightSettings flight;      ///< [flight].
   GasSettings gas;            ///< [gas]; coupling None when absent.

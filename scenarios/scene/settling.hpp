@@ -15,7 +15,8 @@ class InterruptedBeforeStart : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Runs scene.system for scene.settle_time and replaces its particles by the state reached:
+/// Runs scene.system for scene.settle_time (by the scene's method, or by exact events with
+/// initial.settle_method = "event_driven") and replaces its particles by the state reached:
 /// positions at the settled time (folded into the box on periodic axes), velocities and spins as
 /// they are, or zero with settle_zero_velocity. Particle ids, species and their order are kept.
 /// Throws SceneError when the settling collapses (with a hint to set collapse.contact_time), and

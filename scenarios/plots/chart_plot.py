@@ -63,15 +63,18 @@ def read(path):
 
 def place_labels(fig, axes, names, xs, ys):
     """Each label beside its point: right-above, right-below, left-above or left-below, the
-    first that overlaps no label placed before (in order of cost)."""
+    first that stays inside the axes and overlaps no label placed before (in order of cost)."""
     renderer = fig.canvas.get_renderer()
+    frame = axes.get_window_extent(renderer)
     placed = []
     for name, x, y in sorted(zip(names, xs, ys), key=lambda t: t[1]):
         for dx, dy, ha in ((6, 5, "left"), (6, -13, "left"), (-6, 5, "right"), (-6, -13, "right")):
             label = axes.annotate(name, (x, y), textcoords="offset points", xytext=(dx, dy),
                                   ha=ha, fontsize=8)
             box = label.get_window_extent(renderer).expanded(1.05, 1.1)
-            if not any(box.overlaps(other) for other in placed):
+            inside = (box.x0 >= frame.x0 and box.x1 <= frame.x1 and box.y0 >= frame.y0
+                      and box.y1 <= frame.y1)
+            if inside and not any(box.overlaps(other) for other in placed):
                 break
             label.remove()
         else:

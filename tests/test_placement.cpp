@@ -213,10 +213,12 @@ TEST(Settling, SmallColumnComesToRest) {
 TEST(Settling, EventDrivenSettlingGivesEveryMethodTheSameBed) {
   const std::string scene_text =
       column_scene("bead", 1e-3, "fill = { count = 50, region = \"top\" }\n") +
-      "[regions.top]\nmin = [0.0, 0.0, 0.02]\nmax = [0.01, 0.01, 0.04]\n[initial]\nsettle_time = 0.12\n";
+      "[regions.top]\nmin = [0.0, 0.0, 0.02]\nmax = [0.01, 0.01, 0.04]\n[initial]\nsettle_time = "
+      "0.12\n";
   Scene events = parse_scene(scene_text, "column.toml");
   build_initial_state(events);
-  const std::vector<std::string> soft = {"method.kind=\"soft_sphere\"", "species.bead.young_modulus=1e8"};
+  const std::vector<std::string> soft = {"method.kind=\"soft_sphere\"",
+                                         "species.bead.young_modulus=1e8"};
   std::vector<std::string> soft_by_events = soft;
   soft_by_events.push_back("initial.settle_method=\"event_driven\"");
   Scene same = parse_scene(scene_text, "column.toml", soft_by_events);
@@ -248,8 +250,10 @@ TEST(Settling, KeysAreChecked) {
                    {"bad.toml:16", "initial.settle_time = -1", "[0, inf)"});
   expect_fragments(error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_zero_velocity = true\n"),
                    {"bad.toml:16", "initial.settle_zero_velocity", "settle_time"});
-  expect_fragments(error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_method = \"event_driven\"\n"),
-                   {"bad.toml:16", "initial.settle_method", "settle_time"});
-  expect_fragments(error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_time = 0.1\nsettle_method = \"soft\"\n"),
+  expect_fragments(
+      error_of(column_scene("bead", 1e-3, kFill) + "[initial]\nsettle_method = \"event_driven\"\n"),
+      {"bad.toml:16", "initial.settle_method", "settle_time"});
+  expect_fragments(error_of(column_scene("bead", 1e-3, kFill) +
+                            "[initial]\nsettle_time = 0.1\nsettle_method = \"soft\"\n"),
                    {"bad.toml:17", "initial.settle_method", "\"scene\", \"event_driven\""});
 }

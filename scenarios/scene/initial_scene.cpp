@@ -23,7 +23,8 @@ void read_initial(TableReader& root, Scene& scene) {
     // "scene": the scene's own method settles (Monte Carlo, without excluded volume, settles
     // event-driven). "event_driven": exact events settle any scene, so that runs of the same
     // scene and seed by different methods start from the same bed (a chart's variants).
-    scene.settle_by_events = i->string("settle_method", "scene", {"scene", "event_driven"}) == "event_driven";
+    scene.settle_by_events =
+        i->string("settle_method", "scene", {"scene", "event_driven"}) == "event_driven";
     if (i->has("settle_method") && scene.settle_time == 0.0)
       i->fail("settle_method", "is only used with initial.settle_time > 0");
     if (auto f = i->table("from_file")) {

@@ -17,7 +17,8 @@ void settle(Scene& scene, const volatile std::sig_atomic_t* stop) {
   // A bed coming to rest needs excluded volume: the Monte Carlo method has none (its particles
   // would sink through each other onto the floor), so it settles event-driven.
   // initial.settle_method = "event_driven" asks for exact events whatever the method.
-  if (settings.kind == MethodKind::MonteCarlo || scene.settle_by_events) settings.kind = MethodKind::EventDriven;
+  if (settings.kind == MethodKind::MonteCarlo || scene.settle_by_events)
+    settings.kind = MethodKind::EventDriven;
   const bool any_fixed = std::any_of(system.species.begin(), system.species.end(),
                                      [](const Species& s) { return s.fixed; });
   settings.event_driven.flight_model = any_fixed ? FlightModel::Relax : FlightModel::Ballistic;

@@ -103,7 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
 // checks before it runs, without placing the particles).
 TEST(ShippedCharts, EveryCaseMakesAScene) {
   for (const char* file : {"dilute_gas_chart.toml", "cloud_drag_chart.toml",
-                           "narrow_tube_chart.toml", "fines_bed_chart.toml"}) {
+                           "narrow_tube_chart.toml", "fines_bed_chart.toml",
+                           "fines_bed_tc_chart.toml"}) {
     const ChartSpec chart = read_chart(std::string(CAROM_SCENES_DIR) + "/" + file);
     const SweepSpec sweep = chart_sweep(chart);
     const std::vector<SweepCase> cases = sweep.cases();

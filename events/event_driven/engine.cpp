@@ -51,7 +51,9 @@ void validate_system(const System& system, FlightModel flight_model) {
 }  // namespace
 
 EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
-    : system_(std::move(system)), options_(options) {
+    : system_(std::move(system)),
+      options_(options),
+      threads_(options.threads > 0 ? options.threads : WorkerPool::default_threads()) {
   validate_system(system_, options_.flight_model);
   ParticleStore& p = system_.particles;
   const std::size_t n = p.size();
@@ -87,7 +89,9 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
 }
 
 EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, EngineState state)
-    : system_(std::move(system)), options_(options) {
+    : system_(std::move(system)),
+      options_(options),
+      threads_(options.threads > 0 ? options.threads : WorkerPool::default_threads()) {
   system_.particles = std::move(state.particles);
   const std::size_t n = system_.particles.size();
   if (state.cells.size() != n || state.events.size() != n || state.stall_count.size() != n ||
@@ -307,7 +311,7 @@ void EventDrivenEngine::fire_action(std::size_t k) {
     load_records(static_cast<std::int32_t>(i));
     ++counter_[i];
   }
-  for (std::size_t i = 0; i < n; ++i) predict<Flight>(static_cast<std::int32_t>(i));
+  predict_all<Flight>();
 }
 
 bool EventDrivenEngine::run_until(double t_end) {

@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,12 @@
 #include "core/flight_model.hpp"
 #include "core/relax_flight.hpp"
 #include "core/system.hpp"
+#include "core/worker_pool.hpp"
 #include "events/event_driven/calendar.hpp"
 #include "events/event_driven/engine_state.hpp"
 #include "events/event_driven/event.hpp"
-#include "events/event_driven/options.hpp"
 #include "events/event_driven/flights.hpp"
+#include "events/event_driven/options.hpp"
 #include "events/event_driven/pair_batch.hpp"
 #include "events/event_driven/stall_detector.hpp"
 #include "events/laws/collapse.hpp"
@@ -157,6 +159,9 @@ class EventDrivenEngine final : public CollisionMethod {
       Flight::move(m, dt, system_.flight, flights_[i]);
     m.clock = t;
   }
+  /// The worker threads for a loop over every particle, or null to run it on this thread
+  /// (one thread asked for, or too few particles to be worth waking the workers).
+  WorkerPool* shared_workers();
   /// Predicts all of particle i's events for the flights of this run.
   void predict_any(std::int32_t i);
   /// Removes and adds particles (a flow step; every particle is synchronised at time_ and the
@@ -197,6 +202,13 @@ class EventDrivenEngine final : public CollisionMethod {
   double relax_pair_time(std::int32_t i, std::int32_t j, double limit) const;
   double relax_wall_time(std::int32_t i, const Wall& wall, double limit) const;
   Event relax_cell_crossing(std::int32_t i) const;
+  /// Particle i's earliest wall or pair collision before `limit` (its next crossing), or none.
+  /// Reads the records, the grid and the counters only: safe to call for many particles at once.
+  Event relax_collision(std::int32_t i, double limit) const;
+  /// After a synchronising action: every particle's events predicted again (relax flights:
+  /// computed on the worker threads, scheduled in particle order; else one by one).
+  template <class Flight>
+  void predict_all();
 
   /// Puts particle i's earlier event (collision or crossing) in the calendar.
   void schedule(std::int32_t i);
@@ -305,6 +317,10 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Energy that entering particles brought minus what leaving ones took out, J.
   double flow_energy_ = 0;
   double horizon_ = kNever;                    ///< Relax: no prediction reaches past this, s.
+  /// Threads for predict_all (made at the first synchronising action that has enough
+  /// particles to share; shared by copies of the engine, which use it one at a time).
+  std::shared_ptr<WorkerPool> workers_;
+  int threads_ = 1;  ///< options_.threads, or the default it stands for (resolved at construction).
   bool restored_ = false;                      ///< Built from an EngineState (its events stand).
   std::vector<std::pair<std::string, double>> restored_action_times_;
   const volatile std::sig_atomic_t* stop_flag_ = nullptr;
@@ -317,6 +333,14 @@ template <>
 void EventDrivenEngine::predict<GravityFlights>(std::int32_t i, bool new_trajectory);
 template <>
 void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajectory);
+template <>
+void EventDrivenEngine::predict_all<RelaxFlights>();
+
+template <class Flight>
+void EventDrivenEngine::predict_all() {
+  for (std::size_t i = 0; i < hot_.size(); ++i) predict<Flight>(static_cast<std::int32_t>(i));
+}
+
 template <>
 void EventDrivenEngine::predict_after_crossing<StraightFlights>(std::int32_t i, int axis, int direction);
 template <>

@@ -19,6 +19,11 @@ struct EventDrivenOptions {
   /// partners per prediction but more cell crossings and cell visits. 0 (default): chosen per
   /// level by the grid's cost model (1 for a monodisperse system).
   int grid_subdivision = 0;
+  /// Threads of one run (`[engine] threads`): with relax flights, the predictions of every
+  /// particle after a fluid step are shared among them (the calendar is then filled in particle
+  /// order, so results are the same bit for bit for any count). 0 (default): CAROM_THREADS
+  /// when set, else the machine's hardware threads (core/worker_pool.hpp).
+  int threads = 0;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.
 #ifdef NDEBUG

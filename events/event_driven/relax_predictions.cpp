@@ -90,20 +90,10 @@ Event EventDrivenEngine::relax_cell_crossing(std::int32_t i) const {
   return best;
 }
 
-template <>
-void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajectory) {
-  if (horizon_ == kNever) {
-    // No fluid step registered yet: nothing can be predicted (registering one predicts all).
-    agenda_[i].collision = agenda_[i].crossing = Event{};
-    schedule(i);
-    return;
-  }
-  if (new_trajectory) agenda_[i].crossing = relax_cell_crossing(i);
-  // Only events before the next crossing matter: a crossing predicts everything again (see
-  // cross_cell). Searching each candidate only up to the best time so far lets most of them
-  // stop at the first bound.
+Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
+  // Searching each candidate only up to the best time so far lets most of them stop at the
+  // first bound.
   Event best;
-  double limit = agenda_[i].crossing.time;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
     const double t = relax_wall_time(i, system_.walls[w], limit);
     if (t < best.time) {
@@ -128,8 +118,51 @@ void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajector
     for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) consider(j);
   if (grid_.levels().size() > 1)
     grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, consider);
-  agenda_[i].collision = best;
+  return best;
+}
+
+template <>
+void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajectory) {
+  if (horizon_ == kNever) {
+    // No fluid step registered yet: nothing can be predicted (registering one predicts all).
+    agenda_[i].collision = agenda_[i].crossing = Event{};
+    schedule(i);
+    return;
+  }
+  if (new_trajectory) agenda_[i].crossing = relax_cell_crossing(i);
+  // Only events before the next crossing matter: a crossing predicts everything again (see
+  // cross_cell).
+  agenda_[i].collision = relax_collision(i, agenda_[i].crossing.time);
   schedule(i);
+}
+
+WorkerPool* EventDrivenEngine::shared_workers() {
+  // Below a few hundred particles a loop is done before the workers would wake.
+  constexpr std::size_t kShared = 256;
+  if (hot_.size() < kShared || threads_ == 1) return nullptr;
+  if (!workers_) workers_ = std::make_shared<WorkerPool>(threads_);
+  return workers_.get();
+}
+
+template <>
+void EventDrivenEngine::predict_all<RelaxFlights>() {
+  const std::size_t n = hot_.size();
+  WorkerPool* workers = horizon_ == kNever ? nullptr : shared_workers();
+  if (workers == nullptr) {
+    for (std::size_t i = 0; i < n; ++i) predict<RelaxFlights>(static_cast<std::int32_t>(i));
+    return;
+  }
+  // Each particle's agenda is its own cache line (Agenda is aligned to 64 bytes), and the
+  // predictions read only what no prediction writes: any split gives the same agendas.
+  workers->for_chunks(n, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto i = static_cast<std::int32_t>(k);
+      agenda_[k].crossing = relax_cell_crossing(i);
+      agenda_[k].collision = relax_collision(i, agenda_[k].crossing.time);
+    }
+  });
+  // The calendar receives the same updates in the same order as one prediction at a time.
+  for (std::size_t i = 0; i < n; ++i) schedule(static_cast<std::int32_t>(i));
 }
 
 template <>

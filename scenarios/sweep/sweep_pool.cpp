@@ -7,7 +7,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -58,7 +60,15 @@ const volatile std::sig_atomic_t* sweep_stop_flag() {
 }
 
 ProcessPool::ProcessPool(std::size_t slots)
-    : slots_(slots < 1 ? 1 : slots), executable_(own_executable()) {}
+    : slots_(slots < 1 ? 1 : slots), executable_(own_executable()) {
+  // Cases running side by side share the cores: each gets its part of the threads (a run's
+  // relax predictions use every hardware thread by default), unless the user chose.
+  if (std::getenv("CAROM_THREADS") == nullptr) {
+    const std::size_t hardware = std::max<std::size_t>(1, std::thread::hardware_concurrency());
+    const std::string per_case = std::to_string(std::max<std::size_t>(1, hardware / slots_));
+    setenv("CAROM_THREADS", per_case.c_str(), 1);
+  }
+}
 
 ProcessPool::~ProcessPool() {
   for (const Child& child : running_) kill(child.pid, SIGTERM);

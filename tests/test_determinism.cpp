@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include "core/rng.hpp"
-
 #include "scenarios/scene/granular_gas.hpp"
 #include "test_support.hpp"
 
@@ -121,6 +124,36 @@ TEST(Determinism, RestoreRefusesASpeciesBeyondTheScene) {
   damaged = saved;
   damaged.statistics.resize(system.species.size() + 1, system.walls.size());
   EXPECT_THROW(EventDrivenEngine(system, EventDrivenOptions{}, damaged), std::invalid_argument);
+}
+
+// A damaged checkpoint with a radius or a state that is not a finite number is refused before
+// the grid turns it into cell indices (fuzzing found a NaN radius reaching the grid).
+TEST(Determinism, RestoreRefusesNonFiniteRadiiAndStates) {
+  const System system = rough_mixture();
+  EventDrivenEngine sim(system);
+  sim.run_until(0.5);
+  const EngineState saved = sim.state();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::function<void(EngineState&)>> damages = {
+      [&](EngineState& s) { s.particles.radius[3] = nan; },
+      [&](EngineState& s) { s.particles.radius[3] = -0.5; },
+      [&](EngineState& s) { s.particles.radius[3] = inf; },
+      [&](EngineState& s) { s.particles.position[3].x() = nan; },
+      [&](EngineState& s) { s.particles.velocity[3].y() = inf; },
+      [&](EngineState& s) { s.particles.spin[3].z() = nan; },
+      [&](EngineState& s) { s.particles.clock[3] = nan; }};
+  for (std::size_t k = 0; k < damages.size(); ++k) {
+    EngineState damaged = saved;
+    damages[k](damaged);
+    try {
+      EventDrivenEngine restored(system, EventDrivenOptions{}, damaged);
+      ADD_FAILURE() << "damage " << k << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("that is not finite"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(EventDrivenEngine(system, EventDrivenOptions{}, saved));
 }
 
 // The same with walls, gravity and the TC model (a slab one grid cell high).

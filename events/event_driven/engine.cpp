@@ -107,6 +107,17 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
                                   std::to_string(system_.particles.species[i]) +
                                   ", but the scene has " + std::to_string(system_.species.size()) +
                                   " species: the checkpoint is damaged");
+  // A damaged checkpoint's radius or state can be NaN or infinite, which the grid would turn
+  // into cell indices out of range (found by fuzzing).
+  for (std::size_t i = 0; i < n; ++i) {
+    const ParticleStore& p = system_.particles;
+    if (!(p.radius[i] > 0.0 && std::isfinite(p.radius[i])) || !p.position[i].allFinite() ||
+        !p.velocity[i].allFinite() || !p.spin[i].allFinite() || !std::isfinite(p.clock[i]))
+      throw std::invalid_argument("saved state: particle " + std::to_string(p.id[i]) +
+                                  " has a radius that is not a positive finite number, or a "
+                                  "position, velocity, spin or clock that is not finite (radius " +
+                                  std::to_string(p.radius[i]) + " m): the checkpoint is damaged");
+  }
   if (state.statistics.species_count != system_.species.size() ||
       state.statistics.wall_count != system_.walls.size())
     throw std::invalid_argument("saved state: the collision counters are for " +

@@ -182,8 +182,10 @@ std::array<int, 3> HierarchicalGrid::cell_coordinates(int level, const Vec3& r) 
   const Level& grid = levels_[level];
   std::array<int, 3> c{};
   for (int k = 0; k < 3; ++k) {
-    const int idx = static_cast<int>(std::floor((r[k] - domain_.lower[k]) / grid.cell_size[k]));
-    c[k] = std::clamp(idx, 0, grid.cells[k] - 1);
+    // Clamped before the conversion: a point far outside the box (a listed particle not yet
+    // checked against the walls, found by fuzzing) or NaN must not overflow the int.
+    const double x = std::floor((r[k] - domain_.lower[k]) / grid.cell_size[k]);
+    c[k] = !(x >= 0.0) ? 0 : x >= grid.cells[k] - 1 ? grid.cells[k] - 1 : static_cast<int>(x);
   }
   return c;
 }

@@ -113,6 +113,22 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // Moving a particle across faces (with periodic wraps) keeps it findable and its shift right.
+// A point far outside the box (a listed particle before the placement checks it against the
+// walls) lands in the nearest edge cell: the cell index is clamped before it is converted to an
+// int, which overflowed for 2.4e7 m in a 3 cm box (found by fuzzing; UBSan flags the overflow).
+TEST(GridCrossing, PointsFarOutsideTheBoxLandInTheEdgeCells) {
+  Domain domain;
+  domain.upper = Vec3(0.03, 0.02, 0.03);
+  HierarchicalGrid grid(domain, {0.001, 0.001}, 0.5);
+  grid.insert(0, Vec3(2.4e7, -1e300, 0.015));
+  grid.insert(1, Vec3(-2.4e7, 1e300, 0.015));
+  const std::array<int, 3>& cells = grid.levels()[0].cells;
+  EXPECT_EQ(grid.cell_of(0)[0], cells[0] - 1);
+  EXPECT_EQ(grid.cell_of(0)[1], 0);
+  EXPECT_EQ(grid.cell_of(1)[0], 0);
+  EXPECT_EQ(grid.cell_of(1)[1], cells[1] - 1);
+}
+
 TEST(GridCrossing, CrossingFacesWrapsPeriodicAxes) {
   Domain domain;
   domain.upper = Vec3(4, 5, 6);

@@ -3,18 +3,28 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
 namespace carom {
 
 namespace {
-/// Expected work of one prediction sweep over all particles for a given split of the sizes
-/// into levels: cells visited plus partners examined, per particle, summed. Cells are taken as
-/// cubes of the level's diameter / subdivision; particles as uniformly spread.
+/// Expected prediction work per unit time for a given split of the sizes into levels, each
+/// level's cells per diameter (reach) and cell widening (scale: cells of scale x diameter /
+/// reach). Particles are taken as uniformly spread, at one temperature (speed ~ d^-3/2 at one
+/// material density), colliding at the Enskog rate with the BMCSL contact values; each predicts
+/// after each of its collisions (every cell that covers its cell) and after each of its cell
+/// crossings (only the cells that came into reach). A prediction costs kEventCost, plus 1 per
+/// cell visited, plus kCandidateCost per partner examined (a partner's record is a cache line,
+/// a cell's first particle 4 bytes read in rows). The two weights were fitted to measured
+/// times (tests/bench/README.md, "Polydisperse systems").
+constexpr double kEventCost = 80.0;
+constexpr double kCandidateCost = 3.0;
+
 double prediction_cost(const Domain& domain, const std::vector<double>& sizes,
                        const std::vector<double>& counts, const std::vector<int>& level_of_size,
-                       const std::vector<int>& reach) {
+                       const std::vector<int>& reach, const std::vector<double>& scale) {
   const int levels = static_cast<int>(reach.size());
   const double volume = domain.volume();
   std::vector<double> cell(levels, 0.0), density(levels, 0.0), max_diameter(levels, 0.0);
@@ -25,24 +35,69 @@ double prediction_cost(const Domain& domain, const std::vector<double>& sizes,
     density[l] += counts[s] / volume;
   }
   for (int l = 0; l < levels; ++l) {
-    cell[l] = max_diameter[l] / reach[l];
+    cell[l] = max_diameter[l] * scale[l] / reach[l];
     total_cells += volume / (cell[l] * cell[l] * cell[l]);
   }
-  double particles = 0.0;
-  for (double c : counts) particles += c;
+  double particles = 0.0, phi = 0.0, xi2 = 0.0;
+  for (std::size_t s = 0; s < sizes.size(); ++s) {
+    particles += counts[s];
+    phi += counts[s] / volume * std::numbers::pi / 6.0 * sizes[s] * sizes[s] * sizes[s];
+    xi2 += counts[s] / volume * std::numbers::pi / 6.0 * sizes[s] * sizes[s];
+  }
   // Memory: 4 bytes a cell; allow up to 32 cells a particle plus 40 MB.
   if (total_cells > 32.0 * particles + 1e7) return std::numeric_limits<double>::infinity();
+  const double free = 1.0 / std::max(1.0 - phi, 0.05);
   double cost = 0.0;
   for (std::size_t s = 0; s < sizes.size(); ++s) {
-    const int own = level_of_size[s];
-    for (int l = 0; l < levels; ++l) {
-      const double span = l == own ? 2 * reach[l] + 1
-                                   : (cell[own] + sizes[s] + max_diameter[l]) / cell[l] + 1.0;
-      const double cells = span * span * span;
-      cost += counts[s] * cells * (1.0 + cell[l] * cell[l] * cell[l] * density[l]);
+    const double d = sizes[s], mass = d * d * d;
+    double collisions = 0.0;  // per unit time
+    for (std::size_t t = 0; t < sizes.size(); ++t) {
+      const double e = sizes[t], reduced = d * e / (d + e);
+      const double contact = free + 3.0 * xi2 * reduced * free * free +
+                             2.0 * xi2 * xi2 * reduced * reduced * free * free * free;
+      collisions += counts[t] / volume * std::numbers::pi * 0.25 * (d + e) * (d + e) *
+                    std::sqrt(8.0 / std::numbers::pi * (1.0 / mass + 1.0 / (e * e * e))) * contact;
     }
+    const int own = level_of_size[s];
+    const double crossings = 3.0 * std::sqrt(2.0 / std::numbers::pi / mass) / cell[own];
+    double full = kEventCost, entering = kEventCost;
+    for (int l = 0; l < levels; ++l) {
+      double span, cells, band;
+      if (l == own) {
+        span = 2 * reach[l] + 1;
+        cells = span * span * span;
+        band = span * span;
+      } else {
+        span = (cell[own] + sizes[s] + max_diameter[l]) / cell[l] + 1.0;
+        cells = span * span * span;
+        band = span * span * std::min(span, cell[own] / cell[l]);
+      }
+      const double per_cell = 1.0 + kCandidateCost * cell[l] * cell[l] * cell[l] * density[l];
+      full += cells * per_cell;
+      entering += band * per_cell;
+    }
+    cost += counts[s] * (collisions * full + crossings * entering);
   }
   return cost;
+}
+
+/// A level's cells: cells per diameter (the block is (2 reach + 1)^3 cells) and widening.
+struct CellChoice {
+  int reach;
+  double scale;
+};
+/// The choices the cost model weighs per level: 1-3 cells per diameter, or one cell of 1.5-4
+/// diameters (fewer crossings and fewer cells to visit from other levels, more partners each).
+/// The widened cells are offered to the finer levels only: the model's uniform, equal-
+/// temperature gas misjudges a bed under gravity, and the largest level keeps the plain cells
+/// that such beds have been measured with (tests/bench/README.md, "Polydisperse systems").
+constexpr CellChoice kCellChoices[] = {{1, 1.0}, {2, 1.0}, {3, 1.0}, {1, 1.5},
+                                       {1, 2.0}, {1, 3.0}, {1, 4.0}};
+constexpr int kCellChoiceCount = sizeof(kCellChoices) / sizeof(kCellChoices[0]);
+constexpr int kPlainCellChoiceCount = 3;  // the first three: cells of the diameter
+/// The number of choices level l weighs.
+int cell_choice_count(int l) {
+  return l == 0 ? kPlainCellChoiceCount : kCellChoiceCount;
 }
 }  // namespace
 
@@ -51,10 +106,10 @@ HierarchicalGrid::LevelPlan HierarchicalGrid::cheapest_levels(const Domain& doma
                                                                const std::vector<double>& counts,
                                                                int subdivision) {
   // Every split of the sorted sizes into consecutive groups (2^(k-1) of them, k <= 12), and
-  // with subdivision 0 every cells-per-diameter 1..3 of each level (up to 4 levels).
+  // with subdivision 0 every cell choice of each level (up to 4 levels).
   const std::size_t k = sizes.size();
   double best_cost = std::numeric_limits<double>::infinity();
-  LevelPlan best{{sizes.front()}, {std::max(subdivision, 1)}};
+  LevelPlan best{{sizes.front()}, {std::max(subdivision, 1)}, {1.0}};
   for (std::uint32_t mask = 0; mask < (1u << (k - 1)); ++mask) {
     std::vector<int> level_of_size(k, 0);
     std::vector<double> nominal{sizes[0]};
@@ -64,19 +119,22 @@ HierarchicalGrid::LevelPlan HierarchicalGrid::cheapest_levels(const Domain& doma
       level_of_size[s] = static_cast<int>(nominal.size()) - 1;
     }
     const int levels = static_cast<int>(nominal.size());
-    const bool search_reach = subdivision == 0 && levels <= 4;
+    const bool search_cells = subdivision == 0 && levels <= 4;
     int combinations = 1;
-    if (search_reach)
-      for (int l = 0; l < levels; ++l) combinations *= kMaxSubdivision;
+    if (search_cells)
+      for (int l = 0; l < levels; ++l) combinations *= cell_choice_count(l);
     for (int code = 0; code < combinations; ++code) {
       std::vector<int> reach(levels, std::max(subdivision, 1));
-      if (search_reach)
-        for (int l = 0, rest = code; l < levels; ++l, rest /= kMaxSubdivision)
-          reach[l] = 1 + rest % kMaxSubdivision;
-      const double cost = prediction_cost(domain, sizes, counts, level_of_size, reach);
+      std::vector<double> scale(levels, 1.0);
+      if (search_cells)
+        for (int l = 0, rest = code; l < levels; rest /= cell_choice_count(l), ++l) {
+          reach[l] = kCellChoices[rest % cell_choice_count(l)].reach;
+          scale[l] = kCellChoices[rest % cell_choice_count(l)].scale;
+        }
+      const double cost = prediction_cost(domain, sizes, counts, level_of_size, reach, scale);
       if (cost < best_cost * (1.0 - 1e-9)) {
         best_cost = cost;
-        best = LevelPlan{nominal, reach};
+        best = LevelPlan{nominal, reach, scale};
       }
     }
   }
@@ -106,29 +164,35 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
     counts.push_back(0.0);
   }
   std::vector<int> level_reach;
+  std::vector<double> level_scale;
   if (level_ratio < 0.0 && sizes.size() <= 12) {
     LevelPlan plan = cheapest_levels(domain, sizes, counts, subdivision);
     level_diameter_ = std::move(plan.diameters);
     level_reach = std::move(plan.reach);
+    level_scale = std::move(plan.scale);
   } else {
     // Largest first; a size below level_ratio times the current level's starts a new level.
     for (double d : sizes)
       if (level_diameter_.empty() || d < level_ratio * level_diameter_.back()) level_diameter_.push_back(d);
     level_reach.assign(level_diameter_.size(), std::max(subdivision, 1));
+    level_scale.assign(level_diameter_.size(), 1.0);
   }
   const Vec3 length = domain.length();
   for (std::size_t l = 0; l < level_diameter_.size(); ++l) {
-    const double d = level_diameter_[l];
+    // Cells of at least the level's diameter: d is that diameter widened by the plan's scale.
+    double d = level_diameter_[l] * level_scale[l];
     Level grid;
     // A periodic axis needs 2m + 2 cells: with fewer, the cells at the two ends are neighbours
     // both directly and through the boundary, and the nearest image at the time of a prediction
-    // need not be the one that touches. A box too short for m cells per diameter gets fewer.
+    // need not be the one that touches. A box too short for m cells per diameter gets fewer,
+    // and widened cells fall back to the diameter first.
     int m = level_reach[l];
     auto fits = [&](int reach) {
       for (int k = 0; k < 3; ++k)
         if (domain.periodic[k] && std::floor(length[k] * reach / d) < 2 * reach + 2) return false;
       return true;
     };
+    if (!fits(m)) d = level_diameter_[l];
     while (m > 1 && !fits(m)) --m;
     grid.reach = m;
     for (int k = 0; k < 3; ++k) {
@@ -302,6 +366,28 @@ HierarchicalGrid::AxisRange HierarchicalGrid::clip(int level, int k, int first, 
     range.count = std::max(0, last - first + 1);
   }
   return range;
+}
+
+HierarchicalGrid::RawRanges HierarchicalGrid::covering_raw(std::int32_t i, int level,
+                                                           double radius_i,
+                                                           const std::array<int, 3>& cell) const {
+  // The bounds of `cell` as cell_lower and cell_upper compute them for i's own cell, grown as
+  // for_each_candidate grows them.
+  const Level& own = levels_[place_[i].level];
+  const Level& grid = levels_[level];
+  const double reach = radius_i + grid.max_radius;
+  RawRanges raw;
+  for (int k = 0; k < 3; ++k) {
+    const double lower = domain_.lower[k] + cell[k] * own.cell_size[k];
+    const double upper = cell[k] + 1 == own.cells[k]
+                             ? domain_.upper[k]
+                             : domain_.lower[k] + (cell[k] + 1) * own.cell_size[k];
+    raw.first[k] =
+        static_cast<int>(std::floor((lower - reach - domain_.lower[k]) / grid.cell_size[k]));
+    raw.last[k] =
+        static_cast<int>(std::floor((upper + reach - domain_.lower[k]) / grid.cell_size[k]));
+  }
+  return raw;
 }
 
 HierarchicalGrid::AxisRange HierarchicalGrid::covering(int level, int k, double lo, double hi) const {

@@ -44,14 +44,18 @@ class HierarchicalGrid {
   /// puts every particle in one grid. Throws std::invalid_argument when a periodic axis is
   /// shorter than three cells.
   /// `subdivision` m cuts each level's cells to 1/m of its largest diameter; the own-level
-  /// search block is then (2m+1)^3 cells. subdivision = 0 lets the cost model choose m per
-  /// level (large particles among fines search fewer fine cells with smaller own cells).
+  /// search block is then (2m+1)^3 cells. subdivision = 0 lets the cost model choose the cells
+  /// of each level: m per diameter (large particles among fines search fewer fine cells with
+  /// smaller own cells), or one cell of up to 4 diameters (fast fines cross fewer cells, and
+  /// large particles visit fewer of them).
   HierarchicalGrid(const Domain& domain, const std::vector<double>& radius, double level_ratio = -1.0,
                    int subdivision = 1);
-  /// Levels as planned: nominal (largest) diameter and cells per diameter of each.
+  /// Levels as planned: nominal (largest) diameter, cells per diameter and the widening of the
+  /// cells (cells of scale x diameter / reach) of each.
   struct LevelPlan {
     std::vector<double> diameters;
     std::vector<int> reach;
+    std::vector<double> scale;
   };
   /// The cheapest levels for distinct `sizes` (largest first) with `counts` particles each
   /// (see the constructor).
@@ -144,6 +148,39 @@ class HierarchicalGrid {
   /// The cells that entered i's own-level block when it just crossed into its cell along
   /// (axis, direction): the far face layer of the block. Same conventions as own_block.
   int own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells, bool& wrapped) const;
+  /// The cells of another `level` that hold every particle i (radius radius_i) could touch while
+  /// it stays in its cell, in the order for_each_candidate visits them: handed to
+  /// visit(cells, count, wrapped) as flat (padded) indices of `level`, at most kMaxBlock at a
+  /// time. `wrapped` tells whether they cross a periodic face (partners then need the minimum
+  /// image).
+  template <class Visit>
+  void for_each_covering_piece(std::int32_t i, int level, double radius_i, Visit&& visit) const {
+    RawRanges raw = covering_raw(i, level, radius_i, place_[i].cell);
+    visit_ranges(level, raw, visit);
+  }
+  /// As for_each_covering_piece, but only the cells that came into reach when i just crossed
+  /// into its cell along (axis, direction): those not covered from the cell it came from. After
+  /// a crossing through a periodic face (its position was shifted by a box length), or where
+  /// the reach spans a whole periodic axis, every covering cell.
+  template <class Visit>
+  void for_each_entering_piece(std::int32_t i, int level, double radius_i, int axis, int direction,
+                               Visit&& visit) const {
+    const std::array<int, 3>& cell = place_[i].cell;
+    RawRanges raw = covering_raw(i, level, radius_i, cell);
+    std::array<int, 3> before = cell;
+    before[axis] -= direction;
+    const int n = levels_[level].cells[axis];
+    const bool full_lap = domain_.periodic[axis] && raw.last[axis] - raw.first[axis] + 1 >= n;
+    if (before[axis] >= 0 && before[axis] < levels_[place_[i].level].cells[axis] && !full_lap) {
+      const RawRanges old = covering_raw(i, level, radius_i, before);
+      if (direction > 0)
+        raw.first[axis] = std::max(raw.first[axis], old.last[axis] + 1);
+      else
+        raw.last[axis] = std::min(raw.last[axis], old.first[axis] - 1);
+      if (raw.last[axis] < raw.first[axis]) return;
+    }
+    visit_ranges(level, raw, visit);
+  }
   /// First particle in flat (padded) cell `cell` of `level`, or -1.
   std::int32_t head(int level, std::int32_t cell) const { return levels_[level].head[cell]; }
   /// The first particle of each cell of `level` (index by flat padded cell, as own_block
@@ -190,6 +227,18 @@ class HierarchicalGrid {
       return wrap ? (idx < 0 ? idx + cells : (idx >= cells ? idx - cells : idx)) : idx;
     }
   };
+  /// Cells of a level as unclipped index intervals per axis (may reach past the box).
+  struct RawRanges {
+    int first[3], last[3];
+  };
+  /// The cells of `level` that overlap the cell `cell` of i's level grown by radius_i and the
+  /// level's largest radius, unclipped.
+  RawRanges covering_raw(std::int32_t i, int level, double radius_i,
+                         const std::array<int, 3>& cell) const;
+  /// Hands the cells of `raw` (clipped, periodic axes wrapped) to visit(cells, count, wrapped)
+  /// in pieces of at most kMaxBlock, z outermost and x innermost.
+  template <class Visit>
+  void visit_ranges(int level, const RawRanges& raw, Visit&& visit) const;
   /// Cells [first, last] on `level`, axis k: clamped on walled axes, at most one lap on periodic.
   AxisRange clip(int level, int k, int first, int last) const;
   /// The cells on `level`, axis k, that overlap the interval [lo, hi] (m).
@@ -237,6 +286,33 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
       }
     }
   }
+}
+
+template <class Visit>
+void HierarchicalGrid::visit_ranges(int level, const RawRanges& raw, Visit&& visit) const {
+  AxisRange range[3];
+  bool wrapped = false;
+  for (int k = 0; k < 3; ++k) {
+    range[k] = clip(level, k, raw.first[k], raw.last[k]);
+    if (range[k].count == 0) return;
+    wrapped |= domain_.periodic[k] && (raw.first[k] < 0 || raw.last[k] >= range[k].cells);
+  }
+  std::int32_t cells[kMaxBlock];
+  int count = 0;
+  for (int a = 0; a < range[2].count; ++a) {
+    const int z = range[2].at(a);
+    for (int b = 0; b < range[1].count; ++b) {
+      const int y = range[1].at(b);
+      for (int d = 0; d < range[0].count; ++d) {
+        if (count == kMaxBlock) {
+          visit(cells, count, wrapped);
+          count = 0;
+        }
+        cells[count++] = flat_index(level, {range[0].at(d), y, z});
+      }
+    }
+  }
+  if (count > 0) visit(cells, count, wrapped);
 }
 
 }  // namespace carom

@@ -47,11 +47,16 @@ struct GridCase {
   std::array<bool, 3> periodic;
   int count;
   double level_ratio;
+  int subdivision = 1;  // 0: the cost model picks each level's cells (widened ones included)
 };
 /// How ctest lists a case (instead of its bytes).
 void PrintTo(const GridCase& c, std::ostream* out) { *out << c.name; }
 
 class GridOracle : public ::testing::TestWithParam<GridCase> {};
+
+/// 95 % fines of a tenth of the diameter by number: the cost model widens the fines' cells.
+const std::vector<double> kFinesRich = {1.0, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1,
+                                        0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1};
 
 TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
   const GridCase& c = GetParam();
@@ -66,7 +71,7 @@ TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
     radius[i] = 0.5 * c.diameters[rng.below(c.diameters.size())];
     for (int k = 0; k < 3; ++k) position[i][k] = domain.lower[k] + rng.uniform() * c.length[k];
   }
-  HierarchicalGrid grid(domain, radius, c.level_ratio);
+  HierarchicalGrid grid(domain, radius, c.level_ratio, c.subdivision);
   for (int i = 0; i < c.count; ++i) grid.insert(i, position[i]);
   long required = 0, visited_total = 0;
   for (std::int32_t i = 0; i < c.count; ++i) {
@@ -98,12 +103,43 @@ INSTANTIATE_TEST_SUITE_P(
     Polydisperse, GridOracle,
     ::testing::Values(
         GridCase{"ratio 1:2 periodic", {1.0, 0.5}, Vec3(12, 10, 11), {true, true, true}, 3000, 0.5},
-        GridCase{"ratio 1:5 walled", {1.0, 0.2}, Vec3(12, 10, 11), {false, false, false}, 3000, 0.5},
-        GridCase{"ratio 1:10 mixed axes", {1.0, 0.1}, Vec3(9.3, 8.1, 7.7), {true, false, true}, 4000, 0.5},
-        GridCase{"three sizes", {1.0, 0.45, 0.1, 0.07}, Vec3(10.5, 9.2, 8.8), {false, true, false}, 4000, 0.5},
+        GridCase{
+            "ratio 1:5 walled", {1.0, 0.2}, Vec3(12, 10, 11), {false, false, false}, 3000, 0.5},
+        GridCase{"ratio 1:10 mixed axes",
+                 {1.0, 0.1},
+                 Vec3(9.3, 8.1, 7.7),
+                 {true, false, true},
+                 4000,
+                 0.5},
+        GridCase{"three sizes",
+                 {1.0, 0.45, 0.1, 0.07},
+                 Vec3(10.5, 9.2, 8.8),
+                 {false, true, false},
+                 4000,
+                 0.5},
         GridCase{"1:10 one grid", {1.0, 0.1}, Vec3(9, 9, 9), {true, true, true}, 2000, 0.0},
-        GridCase{"1:10 fine level ratio", {1.0, 0.1, 0.3}, Vec3(9, 9, 9), {true, true, false}, 3000, 0.9},
-        GridCase{"four cells per axis", {1.0, 0.2}, Vec3(4.3, 4.9, 4.1), {true, true, true}, 600, 0.5}),
+        GridCase{"1:10 fine level ratio",
+                 {1.0, 0.1, 0.3},
+                 Vec3(9, 9, 9),
+                 {true, true, false},
+                 3000,
+                 0.9},
+        GridCase{
+            "four cells per axis", {1.0, 0.2}, Vec3(4.3, 4.9, 4.1), {true, true, true}, 600, 0.5},
+        GridCase{"1:10 fines widened cells",
+                 kFinesRich,
+                 Vec3(6.1, 5.7, 6.4),
+                 {true, false, true},
+                 6000,
+                 -1.0,
+                 0},
+        GridCase{"1:5 fines cost model",
+                 {1.0, 0.2, 0.2, 0.2},
+                 Vec3(7.1, 6.7, 6.4),
+                 {false, true, true},
+                 4000,
+                 -1.0,
+                 0}),
     // The case's description as a test name (letters and digits; everything else an underscore).
     [](const ::testing::TestParamInfo<GridCase>& info) {
       std::string name = info.param.name;
@@ -148,6 +184,120 @@ TEST(GridCrossing, CrossingFacesWrapsPeriodicAxes) {
   EXPECT_EQ(grid.cell_of(0)[2], 0);
   EXPECT_TRUE(grid.is_outer_face(0, 1, -1));
   EXPECT_FALSE(grid.is_outer_face(0, 0, -1));
+}
+
+// The cost model's cells (HierarchicalGrid::cheapest_levels): fines 1:10 that are 99 % of the
+// particles move 32 times as fast as the large ones at one temperature and cross cells all the
+// time; their cells are widened beyond their diameter (fewer crossings, and fewer cells for the
+// large particles to visit). A monodisperse fluid keeps one cell per diameter.
+TEST(GridLevels, CostModelWidensTheCellsOfFastFines) {
+  Domain domain;
+  domain.upper = Vec3::Constant(12.42);
+  domain.periodic = {true, true, true};
+  std::vector<double> radius(100000, 0.05);
+  std::fill(radius.begin(), radius.begin() + 1000, 0.5);
+  const HierarchicalGrid fines(domain, radius, -1.0, 0);
+  ASSERT_EQ(fines.levels().size(), 2u);
+  EXPECT_GE(fines.levels()[1].cell_size.x(), 1.5 * 0.1);
+  EXPECT_EQ(fines.levels()[1].reach, 1);
+  domain.upper = Vec3::Constant(34.73);
+  const HierarchicalGrid mono(domain, std::vector<double>(32000, 0.5), -1.0, 0);
+  ASSERT_EQ(mono.levels().size(), 1u);
+  EXPECT_EQ(mono.levels()[0].reach, 1);
+  EXPECT_LT(mono.levels()[0].cell_size.x(), 1.05);
+}
+
+// A fines-rich grid with particles in it, for the tests of the other levels' cells below.
+struct FinesGrid {
+  Domain domain;
+  std::vector<double> radius;
+  HierarchicalGrid grid;
+  explicit FinesGrid(std::array<bool, 3> periodic) {
+    Rng rng(7);
+    domain.lower = Vec3(-1.0, 0.5, 2.0);
+    domain.upper = domain.lower + Vec3(6.3, 5.9, 6.6);
+    domain.periodic = periodic;
+    for (int i = 0; i < 5000; ++i) radius.push_back(0.5 * kFinesRich[rng.below(kFinesRich.size())]);
+    grid = HierarchicalGrid(domain, radius, -1.0, 0);
+    for (int i = 0; i < 5000; ++i) {
+      Vec3 r;
+      for (int k = 0; k < 3; ++k) r[k] = domain.lower[k] + rng.uniform() * domain.length()[k];
+      grid.insert(i, r);
+    }
+  }
+  /// The cells of `level` that for_each_covering_piece (or, with a direction,
+  /// for_each_entering_piece) hands over.
+  std::vector<std::int32_t> pieces(std::int32_t i, int level, int axis = 0,
+                                   int direction = 0) const {
+    std::vector<std::int32_t> cells;
+    auto take = [&](const std::int32_t* c, int count, bool) {
+      EXPECT_LE(count, HierarchicalGrid::kMaxBlock);
+      cells.insert(cells.end(), c, c + count);
+    };
+    if (direction == 0)
+      grid.for_each_covering_piece(i, level, radius[i], take);
+    else
+      grid.for_each_entering_piece(i, level, radius[i], axis, direction, take);
+    return cells;
+  }
+};
+
+// The batched scan of the other levels walks the lists of the cells for_each_covering_piece
+// hands over: the same candidates, in the same order, as the visitor of one candidate at a time
+// (the order decides which of equal contact times wins).
+TEST(GridLevels, CoveringPiecesHoldTheOtherLevelsCandidatesInOrder) {
+  for (const auto periodic :
+       {std::array<bool, 3>{true, false, true}, std::array<bool, 3>{true, true, true}}) {
+    const FinesGrid f(periodic);
+    ASSERT_EQ(f.grid.levels().size(), 2u);
+    for (std::int32_t i = 0; i < 5000; i += 7) {
+      std::vector<std::int32_t> expected, walked;
+      f.grid.for_each_candidate_on_other_levels(i, f.radius[i],
+                                                [&](std::int32_t j) { expected.push_back(j); });
+      const int other = 1 - f.grid.level_of(i);
+      for (const std::int32_t cell : f.pieces(i, other))
+        for (std::int32_t j = f.grid.head(other, cell); j >= 0; j = f.grid.next(j))
+          walked.push_back(j);
+      ASSERT_EQ(walked, expected) << "particle " << i;
+    }
+  }
+}
+
+// After a crossing the other levels are searched only in the cells that came into reach: with
+// the cells covered from the cell the particle came from, they hold every cell covered from its
+// new cell, and none of them was covered before (or, after a periodic wrap, every cell).
+TEST(GridLevels, EnteringPiecesAreTheCellsThatCameIntoReach) {
+  FinesGrid f({true, false, true});
+  long entered = 0, wrapped = 0;
+  for (std::int32_t i = 0; i < 5000; i += 11) {
+    const int other = 1 - f.grid.level_of(i);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int direction : {-1, 1}) {
+        if (f.grid.is_outer_face(i, axis, direction)) continue;
+        const std::vector<std::int32_t> before = f.pieces(i, other);
+        const Vec3 shift = f.grid.cross(i, axis, direction);
+        const std::vector<std::int32_t> after = f.pieces(i, other);
+        const std::vector<std::int32_t> entering = f.pieces(i, other, axis, direction);
+        const std::set<std::int32_t> old_cells(before.begin(), before.end()),
+            new_cells(after.begin(), after.end()), band(entering.begin(), entering.end());
+        if (shift != Vec3::Zero()) {
+          EXPECT_EQ(band, new_cells);
+          ++wrapped;
+        } else {
+          for (const std::int32_t c : new_cells)
+            ASSERT_TRUE(old_cells.count(c) || band.count(c))
+                << "cell " << c << " of particle " << i << " never searched";
+          for (const std::int32_t c : band) {
+            ASSERT_TRUE(new_cells.count(c)) << "cell " << c << " out of reach";
+            ASSERT_FALSE(old_cells.count(c)) << "cell " << c << " searched twice";
+          }
+          entered += static_cast<long>(band.size());
+        }
+        f.grid.cross(i, axis, -direction);
+      }
+  }
+  EXPECT_GT(entered, 0);
+  EXPECT_GT(wrapped, 0);
 }
 
 }  // namespace

@@ -62,15 +62,6 @@ Event EventDrivenEngine::straight_cell_crossing(std::int32_t i) const {
   return best_face < 0 ? Event{} : Event{best_time, best_face, 0, EventKind::CellCrossing};
 }
 
-template <bool kGravity>
-double EventDrivenEngine::pair_time(std::int32_t i, std::int32_t j) const {
-  const HotState& a = hot_[i];
-  const HotState& b = hot_[j];
-  return pair_contact<kGravity, true>(a.position, a.velocity, a.clock, a.radius, b.position,
-                                      b.velocity, b.clock, b.radius, system_.flight.gravity,
-                                      system_.domain);
-}
-
 template <>
 void EventDrivenEngine::predict<StraightFlights>(std::int32_t i, bool new_trajectory) {
   if (new_trajectory) agenda_[i].crossing = straight_cell_crossing(i);
@@ -85,18 +76,12 @@ void EventDrivenEngine::predict<GravityFlights>(std::int32_t i, bool new_traject
 
 template <>
 void EventDrivenEngine::predict_after_crossing<StraightFlights>(std::int32_t i, int axis, int direction) {
-  if (grid_.levels().size() > 1)
-    predict<StraightFlights>(i);
-  else
-    scan_slab<false>(i, axis, direction);
+  scan_slab<false>(i, axis, direction);
 }
 
 template <>
 void EventDrivenEngine::predict_after_crossing<GravityFlights>(std::int32_t i, int axis, int direction) {
-  if (grid_.levels().size() > 1)
-    predict<GravityFlights>(i);
-  else
-    scan_slab<true>(i, axis, direction);
+  scan_slab<true>(i, axis, direction);
 }
 
 template <bool kGravity>
@@ -111,18 +96,34 @@ void EventDrivenEngine::predict_ballistic(std::int32_t i) {
   bool wrapped = false;
   const int count = grid_.own_block(i, cells, wrapped);
   double best_pair_time = best.time;
-  const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
+  const std::int32_t best_partner =
+      scan_cells<kGravity>(i, grid_.level_of(i), cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
     best = Event{best_pair_time, best_partner, counter_[best_partner], EventKind::Pair};
-  // Other levels (polydisperse systems).
-  if (grid_.levels().size() > 1) {
-    grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, [&](std::int32_t j) {
-      const double t = pair_time<kGravity>(i, j);
-      if (t < best.time) best = Event{t, j, counter_[j], EventKind::Pair};
-    });
-  }
+  if (grid_.levels().size() > 1) scan_other_levels<kGravity>(i, best);
   agenda_[i].collision = best;
   schedule(i);
+}
+
+template <bool kGravity>
+void EventDrivenEngine::scan_other_levels(std::int32_t i, Event& best, int axis,
+                                          int direction) const {
+  const int own = grid_.level_of(i);
+  const double radius = hot_[i].radius;
+  for (int level = 0; level < static_cast<int>(grid_.levels().size()); ++level) {
+    if (level == own) continue;
+    // The same candidates in the same order as one pair test at a time (the first of equal
+    // times wins), batched as on the own level.
+    auto scan = [&](const std::int32_t* cells, int count, bool wrapped) {
+      double time = best.time;
+      const std::int32_t partner = scan_cells<kGravity>(i, level, cells, count, wrapped, time);
+      if (partner >= 0) best = Event{time, partner, counter_[partner], EventKind::Pair};
+    };
+    if (direction == 0)
+      grid_.for_each_covering_piece(i, level, radius, scan);
+    else
+      grid_.for_each_entering_piece(i, level, radius, axis, direction, scan);
+  }
 }
 
 void EventDrivenEngine::schedule(std::int32_t i) {
@@ -134,14 +135,14 @@ void EventDrivenEngine::schedule(std::int32_t i) {
 }
 
 template <bool kGravity>
-std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
-                                   double& best_time) const {
+std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std::int32_t* cells,
+                                           int count, bool wrapped, double& best_time) const {
   const HotState& a = hot_[i];
   const PairQuery query{a.position, a.velocity, a.clock, a.radius, system_.flight.gravity,
                         system_.domain};
   const HotState padding = query.never_touching();
   const HotState* hot = hot_.data();
-  const std::int32_t* head = grid_.head_array(grid_.level_of(i));
+  const std::int32_t* head = grid_.head_array(level);
   const std::int32_t* next = grid_.next_array();
   // The first particles of the occupied cells, in the cells' order: loaded before any list is
   // walked (independent loads), and without a branch per cell (about half are empty).
@@ -207,10 +208,13 @@ void EventDrivenEngine::scan_slab(std::int32_t i, int axis, int direction) {
   bool wrapped = false;
   const int count = grid_.own_slab(i, axis, direction, cells, wrapped);
   double best_pair_time = agenda_[i].collision.time;
-  const std::int32_t best_partner = scan_cells<kGravity>(i, cells, count, wrapped, best_pair_time);
+  const std::int32_t best_partner =
+      scan_cells<kGravity>(i, grid_.level_of(i), cells, count, wrapped, best_pair_time);
   if (best_partner >= 0)
     agenda_[i].collision =
         Event{best_pair_time, best_partner, counter_[best_partner], EventKind::Pair};
+  if (grid_.levels().size() > 1)
+    scan_other_levels<kGravity>(i, agenda_[i].collision, axis, direction);
   schedule(i);
 }
 

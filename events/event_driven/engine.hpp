@@ -184,18 +184,20 @@ class EventDrivenEngine final : public CollisionMethod {
   void predict_ballistic(std::int32_t i);
   template <bool kGravity>
   void scan_slab(std::int32_t i, int axis, int direction);
-  /// Contact time of particles i and j (periodic images considered), or kNever.
-  template <bool kGravity>
-  double pair_time(std::int32_t i, std::int32_t j) const;
   double wall_time(std::int32_t i, const Wall& wall) const;
   Event cell_crossing(std::int32_t i) const;
   /// cell_crossing without gravity (straight flights), bit for bit the same event.
   Event straight_cell_crossing(std::int32_t i) const;
-  /// Earliest contact of i with the particles of the given cells of its own level, if earlier
-  /// than best_time (updated); returns the partner or -1.
+  /// Earliest contact of i with the particles of the given cells of `level`, if earlier than
+  /// best_time (updated); returns the partner or -1.
   template <bool kGravity>
-  std::int32_t scan_cells(std::int32_t i, const std::int32_t* cells, int count, bool wrapped,
-                          double& best_time) const;
+  std::int32_t scan_cells(std::int32_t i, int level, const std::int32_t* cells, int count,
+                          bool wrapped, double& best_time) const;
+  /// Earliest contact of i with the particles of the levels other than its own, in the cells
+  /// that cover its cell (after a crossing along (axis, direction) with direction != 0: only
+  /// those that just came into reach), if earlier than `best` (updated).
+  template <bool kGravity>
+  void scan_other_levels(std::int32_t i, Event& best, int axis = 0, int direction = 0) const;
 
   // Relax flights (relax_predictions.cpp).
   /// Contact time of i and j if before `limit` (and the horizon), else kNever; s.

@@ -189,7 +189,8 @@ std::string describe_scene(const Scene& scene) {
   if (scene.method.kind == MethodKind::EventDriven && c.elastic_below_speed > 0) out << "  impacts slower than " << format_number(c.elastic_below_speed) << " m/s are elastic\n";
 
   if (p.size() > 0 && scene.method.kind == MethodKind::EventDriven) {
-    HierarchicalGrid grid(d, p.radius, scene.method.event_driven.grid_level_ratio);
+    HierarchicalGrid grid(d, p.radius, scene.method.event_driven.grid_level_ratio,
+                          scene.method.event_driven.grid_subdivision);
     const double ratio = scene.method.event_driven.grid_level_ratio;
     out << "  neighbour grid: " << grid.levels().size() << " level" << (grid.levels().size() > 1 ? "s" : "") << " ("
         << (ratio < 0.0   ? std::string("sizes split into levels by the grid's cost model, the split with the least "
@@ -200,8 +201,10 @@ std::string describe_scene(const Scene& scene) {
         << ")\n";
     for (std::size_t l = 0; l < grid.levels().size(); ++l) {
       const auto& level = grid.levels()[l];
-      out << "    level " << l << ": " << level.cells[0] << " x " << level.cells[1] << " x " << level.cells[2]
-          << " cells of " << vec(level.cell_size) << " m, largest radius " << format_number(level.max_radius) << " m\n";
+      out << "    level " << l << ": " << level.cells[0] << " x " << level.cells[1] << " x "
+          << level.cells[2] << " cells of " << vec(level.cell_size) << " m, largest radius "
+          << format_number(level.max_radius) << " m, block of " << 2 * level.reach + 1
+          << "^3 cells\n";
     }
   }
 

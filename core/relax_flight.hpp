@@ -43,6 +43,15 @@ struct RelaxFlight {
   Vec3 displacement(const Vec3& v0, double s) const {
     return s * v0 + (s * s * relax_phi2(rate * s)) * acceleration(v0);
   }
+  /// An upper bound of how far a flight of s >= 0 seconds from velocity v0 can carry the
+  /// particle from where it starts, m: |v0| s + |a(v0)| s^2 / 2 (the acceleration only decays
+  /// along the flight: a(s) = a(v0) e^{-rate s}), with each length bounded from above by the sum
+  /// of its components' magnitudes (no square root). Never below the distance reached at any
+  /// time in [0, s].
+  double reach_bound(const Vec3& v0, double s) const {
+    const Vec3 a0 = acceleration(v0);
+    return s * (v0.cwiseAbs().sum() + 0.5 * s * a0.cwiseAbs().sum());
+  }
   /// Moves a state (r, v) on by a flight of s seconds (exactly as displacement() and
   /// velocity() do, bit for bit) and returns the work per unit mass that the gas forces (drag
   /// and pressure gradient: the acceleration less gravity) did on the way, J/kg: the exact

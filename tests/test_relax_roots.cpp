@@ -157,10 +157,39 @@ TEST(RelaxFlight, GasWorkIsTheIntegralOfTheGasForcesPower) {
     integral *= h / 3.0L;
     Vec3 r{0.1, -0.2, 0.3}, u = v0;
     const double work = f.move_booking_gas_work(r, u, s, kGravity);
-    const double scale = (f.acceleration(v0) - kGravity).norm() * (v0.norm() + f.acceleration(v0).norm() * s) * s;
+    const double scale =
+        (f.acceleration(v0) - kGravity).norm() * (v0.norm() + f.acceleration(v0).norm() * s) * s;
     EXPECT_NEAR(work, (double)integral, 1e-9 * scale) << "case " << k;
     EXPECT_EQ(r, Vec3(Vec3{0.1, -0.2, 0.3} + f.displacement(v0, s)));
     EXPECT_EQ(u, f.velocity(v0, s));
+  }
+}
+
+// reach_bound ends most candidates of a relax pair prediction (relax_collision) before any
+// exponential is computed, so it must never fall short of where the flight goes: over random
+// flights (rates 0 to 1e4 1/s, drives and velocities over three decades, towards and against
+// the velocity) it must cover the distance |r(s') - r0| at 200 times s' in [0, s] (the exact
+// flight, checked above), and the Euclidean form |v0| s + |a0| s^2 / 2 of relax_pair_time's own
+// first rejection, which the engine's looser test must never reject more than. The sum of
+// magnitudes is mathematically never below the length; computed, it may fall short of the
+// computed length by round-off only (when one component holds the whole vector), which the
+// engine covers with a relative margin of 1e-12: checked here with 1e-14.
+TEST(RelaxFlight, ReachBoundCoversTheFlight) {
+  Rng rng(19);
+  for (int k = 0; k < 400; ++k) {
+    const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
+    const RelaxFlight f{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
+    // Every eighth velocity along one axis: there the sum of magnitudes is the length itself.
+    const Vec3 v0 = k % 8 == 3 ? Vec3(0, 0, -log_uniform(rng, 0.01, 10.0))
+                               : Vec3(log_uniform(rng, 0.01, 10.0) * unit(rng));
+    const double s = log_uniform(rng, 1e-5, 1e-1);
+    const double bound = f.reach_bound(v0, s);
+    const double euclidean = s * (v0.norm() + 0.5 * s * f.acceleration(v0).norm());
+    EXPECT_GE(bound, euclidean * (1.0 - 1e-14)) << "case " << k;
+    double farthest = 0.0;
+    for (int m = 1; m <= 200; ++m)
+      farthest = std::max(farthest, f.displacement(v0, s * m / 200).norm());
+    EXPECT_GE(bound, farthest * (1.0 - 1e-14)) << "case " << k;
   }
 }
 

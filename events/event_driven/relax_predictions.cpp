@@ -1,5 +1,5 @@
-// The prediction interface for relax flights (gravity plus a linear drag frozen for one fluid step):
-// pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
+// The prediction interface for relax flights (gravity plus a linear drag frozen for one fluid
+// step): pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
 // (horizon_), where every particle is synchronised and predicted again.
 #include <algorithm>
 
@@ -25,8 +25,9 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
   // reach each other cannot touch. In a dense bed this ends most candidates.
   {
     const double span_a = end - a.clock, span_b = end - b.clock;
-    const double sweep = span_a * (a.velocity.norm() + 0.5 * span_a * fa.acceleration(a.velocity).norm()) +
-                         span_b * (b.velocity.norm() + 0.5 * span_b * fb.acceleration(b.velocity).norm());
+    const double sweep =
+        span_a * (a.velocity.norm() + 0.5 * span_a * fa.acceleration(a.velocity).norm()) +
+        span_b * (b.velocity.norm() + 0.5 * span_b * fb.acceleration(b.velocity).norm());
     Vec3 gap = a.position - b.position;
     system_.domain.minimum_image(gap);
     const double reach = contact + sweep;
@@ -101,23 +102,45 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
       limit = t;
     }
   }
+  // Most candidates of a dense bed are too far away to be reached before the limit. They are
+  // ended by a looser form of relax_pair_time's first rejection, with the query's sweep
+  // computed once per limit and no square root; what passes it is decided by relax_pair_time
+  // itself, so the events are the same bit for bit. (Without the looser test, 90 % of a
+  // dense bed's prediction time went to that first rejection's four square roots.)
+  const HotState& a = hot_[i];
+  const RelaxFlight& fa = flights_[i];
+  double end = std::min(horizon_, limit);
+  double sweep_a = fa.reach_bound(a.velocity, end - a.clock);
+  bool wrapped = false;
   auto consider = [&](std::int32_t j) {
     if (j == i) return;
+    const HotState& b = hot_[j];
+    Vec3 gap = a.position - b.position;
+    if (wrapped) system_.domain.minimum_image(gap);
+    // The factor covers the round-off by which a computed sum of magnitudes could fall short
+    // of a computed length.
+    const double reach =
+        (a.radius + b.radius + sweep_a + flights_[j].reach_bound(b.velocity, end - b.clock)) *
+        (1.0 + 1e-12);
+    if (gap.squaredNorm() > reach * reach) return;
     const double t = relax_pair_time(i, j, limit);
     if (t < best.time) {
       best = Event{t, j, counter_[j], EventKind::Pair};
       limit = t;
+      end = std::min(horizon_, limit);
+      sweep_a = fa.reach_bound(a.velocity, end - a.clock);
     }
   };
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
-  bool wrapped = false;
   const int count = grid_.own_block(i, cells, wrapped);
   const int level = grid_.level_of(i);
   const std::int32_t* next = grid_.next_array();
   for (int c = 0; c < count; ++c)
     for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) consider(j);
-  if (grid_.levels().size() > 1)
+  if (grid_.levels().size() > 1) {
+    wrapped = true;  // the other levels' pieces may wrap: always take the nearest image
     grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, consider);
+  }
   return best;
 }
 

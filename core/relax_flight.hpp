@@ -1,6 +1,7 @@
 #pragma once
 /// The `relax` flight model: exact flight under gravity plus a linear drag frozen for one fluid
 /// step (ballistic-plus-drag). See DESIGN.md section 2.
+#include <algorithm>
 #include <cmath>
 
 #include "vec3.hpp"
@@ -67,6 +68,25 @@ struct RelaxFlight {
     r += dr;
     v += dv;
     return work;
+  }
+};
+
+/// Bounds on a set of flights (the largest drive and rate among them), so that how far any
+/// particle of the set can fly is bounded from its velocity alone, without reading its flight.
+struct RelaxFlightBounds {
+  double drive = 0.0;  ///< The largest |drive_x| + |drive_y| + |drive_z|, m/s^2.
+  double rate = 0.0;   ///< The largest rate, 1/s.
+
+  /// Widens the bounds to hold flight f too.
+  void include(const RelaxFlight& f) {
+    drive = std::max(drive, f.drive.cwiseAbs().sum());
+    rate = std::max(rate, f.rate);
+  }
+  /// Never below f.reach_bound(v0, s) for any flight f included (m): |a(v0)| is bounded by
+  /// |drive| + rate |v0|, each length by the sum of its components' magnitudes.
+  double reach_bound(const Vec3& v0, double s) const {
+    const double speed = v0.cwiseAbs().sum();
+    return s * (speed + 0.5 * s * (drive + rate * speed));
   }
 };
 

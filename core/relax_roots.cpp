@@ -118,6 +118,12 @@ double relax_gap_closing_time(double gap, double gap_speed, double gap_drive, do
                               double horizon) {
   assert(rate >= 0.0 && horizon >= 0.0 && std::isfinite(horizon));
   const Gap g{gap, gap_speed, gap_drive - rate * gap_speed, rate};
+  // The cheapest answer first: gap' strays from its start by at most |a0| s (gap'' = a0 e^{-rate
+  // s} only decays), so over the horizon the gap falls by at most |gap'| H + |a0| H^2 / 2. A gap
+  // wider than that (by a margin far above the round-off of gap(s)) cannot close, and no
+  // logarithm or exponential is needed: most faces and walls of a slow, dense bed end here.
+  if (gap > (std::abs(gap_speed) + 0.5 * std::abs(g.a0) * horizon) * horizon * (1.0 + 1e-12))
+    return kNever;
   // gap' changes sign at most once, at turn = (-v0 / D) log1p(x) / x with x = -rate v0 / D,
   // where v0 = gap_speed and D = gap_drive have opposite signs (v(s) -> D / rate, or v0 + D s).
   double turn = kNever;

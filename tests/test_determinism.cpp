@@ -126,8 +126,8 @@ TEST(Determinism, RestoreRefusesASpeciesBeyondTheScene) {
   EXPECT_THROW(EventDrivenEngine(system, EventDrivenOptions{}, damaged), std::invalid_argument);
 }
 
-// A damaged checkpoint with a radius or a state that is not a finite number is refused before
-// the grid turns it into cell indices (fuzzing found a NaN radius reaching the grid).
+// A damaged checkpoint with a radius, a state or a flight that is not a finite number is refused
+// before the grid turns it into cell indices (fuzzing found a NaN radius reaching the grid).
 TEST(Determinism, RestoreRefusesNonFiniteRadiiAndStates) {
   const System system = rough_mixture();
   EventDrivenEngine sim(system);
@@ -142,7 +142,11 @@ TEST(Determinism, RestoreRefusesNonFiniteRadiiAndStates) {
       [&](EngineState& s) { s.particles.position[3].x() = nan; },
       [&](EngineState& s) { s.particles.velocity[3].y() = inf; },
       [&](EngineState& s) { s.particles.spin[3].z() = nan; },
-      [&](EngineState& s) { s.particles.clock[3] = nan; }};
+      [&](EngineState& s) { s.particles.clock[3] = nan; },
+      // A flight out of range would escape the bounds the relax predictions put on all of them.
+      [&](EngineState& s) { s.flights[3].rate = nan; },
+      [&](EngineState& s) { s.flights[3].rate = -1.0; },
+      [&](EngineState& s) { s.flights[3].drive.x() = inf; }};
   for (std::size_t k = 0; k < damages.size(); ++k) {
     EngineState damaged = saved;
     damages[k](damaged);

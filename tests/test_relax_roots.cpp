@@ -193,6 +193,28 @@ TEST(RelaxFlight, ReachBoundCoversTheFlight) {
   }
 }
 
+// RelaxFlightBounds lets a prediction bound a candidate's reach from its velocity alone: for a
+// set of random flights, the set's bound must never fall below any member's own reach_bound
+// (|drive - rate v| <= |drive| + rate |v| for sums of magnitudes; margin as above).
+TEST(RelaxFlight, BoundsOfASetCoverEveryMember) {
+  Rng rng(23);
+  std::vector<RelaxFlight> flights;
+  RelaxFlightBounds bounds;
+  for (int k = 0; k < 50; ++k) {
+    const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
+    flights.push_back(
+        RelaxFlight{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)});
+    bounds.include(flights.back());
+  }
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 v0 = log_uniform(rng, 0.01, 10.0) * unit(rng);
+    const double s = log_uniform(rng, 1e-5, 1e-1);
+    const double bound = bounds.reach_bound(v0, s);
+    for (const RelaxFlight& f : flights)
+      ASSERT_GE(bound, f.reach_bound(v0, s) * (1.0 - 1e-14)) << k;
+  }
+}
+
 // --- the brute-force oracle (contact_oracle.hpp) --------------------------------------------
 
 using test::Agreement;

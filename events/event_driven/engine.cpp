@@ -66,6 +66,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
                                                              : Flights::Straight;
   flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   hold_fixed_particles();
+  bound_flights();
   agenda_.assign(n, Agenda{});
   end_slot_ = n;
   calendar_.resize(n + 1);
@@ -154,6 +155,16 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
   flights_ = std::move(state.flights);
   if (flights_.empty()) flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   if (flights_.size() != n) throw std::invalid_argument("saved state: flights missing");
+  // The predictions bound every flight by the largest (bound_flights): a damaged flight must not
+  // slip past them.
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(flights_[i].rate >= 0.0 && std::isfinite(flights_[i].rate)) ||
+        !flights_[i].drive.allFinite())
+      throw std::invalid_argument("saved state: particle " +
+                                  std::to_string(system_.particles.id[i]) +
+                                  "'s flight has a drag rate that is not a finite number >= 0 or a "
+                                  "drive that is not finite: the checkpoint is damaged");
+  bound_flights();
   if (state.crossings.size() != n) throw std::invalid_argument("saved state: crossings missing");
   agenda_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -278,6 +289,11 @@ void EventDrivenEngine::hold_fixed_particles() {
     }
 }
 
+void EventDrivenEngine::bound_flights() {
+  flight_bounds_ = RelaxFlightBounds{};
+  for (const RelaxFlight& f : flights_) flight_bounds_.include(f);
+}
+
 double EventDrivenEngine::next_synchronisation() const {
   double t = kNever;
   for (const PeriodicAction& a : actions_)
@@ -322,6 +338,7 @@ void EventDrivenEngine::fire_action(std::size_t k) {
     load_records(static_cast<std::int32_t>(i));
     ++counter_[i];
   }
+  bound_flights();
   predict_all<Flight>();
 }
 

@@ -212,6 +212,8 @@ class EventDrivenEngine final : public CollisionMethod {
   template <class Flight>
   void predict_all();
 
+  /// Sets flight_bounds_ from flights_ (after anything that changed a flight).
+  void bound_flights();
   /// Puts particle i's earlier event (collision or crossing) in the calendar.
   void schedule(std::int32_t i);
   /// Sets the lasting-contact monitor's limit and window from the options and starts its
@@ -313,6 +315,8 @@ class EventDrivenEngine final : public CollisionMethod {
   StallDetector stall_;
   RateMonitor rate_;
   std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.
+  /// Relax: bounds on every flight in flights_ (set by bound_flights whenever they change).
+  RelaxFlightBounds flight_bounds_;
   /// Work done on the particles by the gas since the start, J: by the gas forces of relax
   /// flights up to each particle's clock, and by the synchronising actions (drag kicks).
   double gas_work_ = 0;

@@ -2,6 +2,7 @@
 // step): pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
 // (horizon_), where every particle is synchronised and predicted again.
 #include <algorithm>
+#include <cassert>
 
 #include "core/relax_roots.hpp"
 #include "events/event_driven/engine.hpp"
@@ -103,10 +104,11 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
     }
   }
   // Most candidates of a dense bed are too far away to be reached before the limit. They are
-  // ended by a looser form of relax_pair_time's first rejection, with the query's sweep
-  // computed once per limit and no square root; what passes it is decided by relax_pair_time
-  // itself, so the events are the same bit for bit. (Without the looser test, 90 % of a
-  // dense bed's prediction time went to that first rejection's four square roots.)
+  // ended by a looser form of relax_pair_time's first rejection: the query's sweep computed
+  // once per limit, the candidate's bounded from its record alone (flight_bounds_: its flight
+  // is not read), no square root. What passes is decided by relax_pair_time itself, so the
+  // events are the same bit for bit. (Without it, 90 % of a dense bed's prediction time went to
+  // that first rejection's four square roots.)
   const HotState& a = hot_[i];
   const RelaxFlight& fa = flights_[i];
   double end = std::min(horizon_, limit);
@@ -120,9 +122,11 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
     // The factor covers the round-off by which a computed sum of magnitudes could fall short
     // of a computed length.
     const double reach =
-        (a.radius + b.radius + sweep_a + flights_[j].reach_bound(b.velocity, end - b.clock)) *
+        (a.radius + b.radius + sweep_a + flight_bounds_.reach_bound(b.velocity, end - b.clock)) *
         (1.0 + 1e-12);
     if (gap.squaredNorm() > reach * reach) return;
+    assert(flights_[j].rate <= flight_bounds_.rate &&
+           flights_[j].drive.cwiseAbs().sum() <= flight_bounds_.drive);
     const double t = relax_pair_time(i, j, limit);
     if (t < best.time) {
       best = Event{t, j, counter_[j], EventKind::Pair};

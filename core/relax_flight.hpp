@@ -84,8 +84,9 @@ struct RelaxFlightBounds {
   }
   /// Never below f.reach_bound(v0, s) for any flight f included (m): |a(v0)| is bounded by
   /// |drive| + rate |v0|, each length by the sum of its components' magnitudes.
+  /// (The operations in this order are those of the batch test, reach_tests in pair_batch.hpp.)
   double reach_bound(const Vec3& v0, double s) const {
-    const double speed = v0.cwiseAbs().sum();
+    const double speed = std::abs(v0.x()) + std::abs(v0.y()) + std::abs(v0.z());
     return s * (speed + 0.5 * s * (drive + rate * speed));
   }
 };

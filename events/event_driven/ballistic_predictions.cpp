@@ -144,21 +144,12 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
   const HotState* hot = hot_.data();
   const std::int32_t* head = grid_.head_array(level);
   const std::int32_t* next = grid_.next_array();
-  // The first particles of the occupied cells, in the cells' order: loaded before any list is
-  // walked (independent loads), and without a branch per cell (about half are empty).
-  std::int32_t first[HierarchicalGrid::kMaxBlock];
-  int occupied = 0;
-  for (int c = 0; c < count; ++c) {
-    const std::int32_t j = head[cells[c]];
-    first[occupied] = j;
-    occupied += j >= 0;
-  }
   std::int32_t best_partner = -1;
   // Candidates are gathered into a batch, their contact times computed four at a time, and the
   // earliest picked in the order the cells were walked (as one at a time would: the first of
   // equal times).
   PairBatch batch;
-  auto test_batch = [&](int found) {
+  gather_candidates(i, head, next, cells, count, hot, batch, [&](int found) {
     batch.pad_to_vectors(found, &padding);
     if (wrapped)
       contact_times<kGravity, true>(query, batch);
@@ -169,35 +160,7 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
       best_time = batch.time[k];
       best_partner = static_cast<std::int32_t>(batch.state[k] - hot);
     }
-  };
-  // A cell's first two particles are taken without a branch on the list's length (0, 1 or 2
-  // more in a dense fluid, so a loop's exit mispredicted about once per cell); the rare third
-  // and later ones in a loop. A particle is written in any case and counted only when it is a
-  // candidate (not i, not a missing second), so the next write replaces it.
-  int found = 0;
-  for (int c = 0; c < occupied; ++c) {
-    if (found > PairBatch::kCapacity - 2) {
-      test_batch(found);
-      found = 0;
-    }
-    const std::int32_t j1 = first[c];
-    batch.state[found] = hot + j1;
-    found += j1 != i;
-    const std::int32_t j2 = next[j1];
-    const bool second = j2 >= 0;
-    const std::int32_t k = second ? j2 : j1;
-    batch.state[found] = hot + k;
-    found += second & (j2 != i);
-    for (std::int32_t j = second ? next[k] : -1; j >= 0; j = next[j]) {
-      if (found == PairBatch::kCapacity) {
-        test_batch(found);
-        found = 0;
-      }
-      batch.state[found] = hot + j;
-      found += j != i;
-    }
-  }
-  if (found > 0) test_batch(found);
+  });
   return best_partner;
 }
 

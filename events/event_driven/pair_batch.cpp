@@ -121,7 +121,54 @@ CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch)
   }
   batch.earliest = best;
 }
+CAROM_LANES_INLINE Lanes magnitude(Lanes x) {
+  return select(x < splat(0.0), -x, x);
+}
+
+template <bool kImage>
+CAROM_LANES_INLINE void reach_tests_impl(const ReachQuery& q, PairBatch& batch) {
+  const Lanes pax = splat(q.position.x()), pay = splat(q.position.y()), paz = splat(q.position.z());
+  const Lanes radius_a = splat(q.radius), sweep_a = splat(q.sweep), end = splat(q.end);
+  const Lanes drive = splat(q.bounds.drive), rate = splat(q.bounds.rate), half = splat(0.5);
+  const Lanes margin = splat(1.0 + 1e-12), zero = splat(0.0), never = splat(kNever);
+  const Vec3 length = q.domain.length();
+  for (int k = 0; k < batch.count; k += 4) {
+    Lanes rows[4], place[4], motion[4];
+    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->position.x());
+    transpose(rows, place);
+    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->velocity.x());
+    transpose(rows, motion);
+    Lanes dx = pax - place[0], dy = pay - place[1], dz = paz - place[2];
+    if constexpr (kImage) {
+      if (q.domain.periodic[0]) dx = nearest_image(dx, length.x());
+      if (q.domain.periodic[1]) dy = nearest_image(dy, length.y());
+      if (q.domain.periodic[2]) dz = nearest_image(dz, length.z());
+    }
+    // may_reach's operations (with RelaxFlightBounds::reach_bound's) in their order.
+    const Lanes span = end - place[3];
+    const Lanes speed = magnitude(motion[0]) + magnitude(motion[1]) + magnitude(motion[2]);
+    const Lanes sweep = span * (speed + half * span * (drive + rate * speed));
+    const Lanes reach = (radius_a + motion[3] + sweep_a + sweep) * margin;
+    const Lanes t = select(dx * dx + dy * dy + dz * dz > reach * reach, never, zero);
+    __builtin_memcpy(batch.time + k, &t, sizeof t);
+  }
+}
 }  // namespace
+
+#define CAROM_REACH_TESTS(I)                                                     \
+  __attribute__((target_clones("avx2", "default"))) static void reach_tests_##I( \
+      const ReachQuery& q, PairBatch& batch) {                                   \
+    reach_tests_impl<I>(q, batch);                                               \
+  }                                                                              \
+  template <>                                                                    \
+  void reach_tests<I>(const ReachQuery& q, PairBatch& batch) {                   \
+    reach_tests_##I(q, batch);                                                   \
+  }
+
+CAROM_REACH_TESTS(false)
+CAROM_REACH_TESTS(true)
+
+#undef CAROM_REACH_TESTS
 
 #define CAROM_CONTACT_TIMES(G, I)                                                        \
   __attribute__((target_clones("avx2", "default"))) static void contact_times_##G##I( \

@@ -10,7 +10,9 @@
 /// the same to the last bit (test_predictions checks it), and no fused multiply-add is used.
 #include <cstdint>
 
+#include "core/cell_grid.hpp"
 #include "core/domain.hpp"
+#include "core/relax_flight.hpp"
 #include "core/roots.hpp"
 #include "core/vec3.hpp"
 
@@ -85,6 +87,54 @@ struct PairBatch {
   }
 };
 
+/// Hands the particles of the given cells but `self` (flat indices into `head`; lists linked by
+/// `next`), in the cells' order, to `batch` as records of `records`, and calls test(found)
+/// whenever it is full and once for the rest (if any); test reads batch.state[0, found). The
+/// walk is the inner loop of every prediction: the cells' first particles are loaded before
+/// any list is walked (independent loads, and no branch per cell: about half are empty), and a
+/// cell's first two particles are taken without a branch on the list's length (0, 1 or 2 more
+/// in a dense fluid, so a loop's exit mispredicted about once per cell); the rare third and
+/// later ones in a loop. A particle is written in any case and counted only when it is a
+/// candidate (not self, not a missing second), so the next write replaces it.
+template <class Test>
+[[gnu::always_inline]] inline void gather_candidates(std::int32_t self, const std::int32_t* head,
+                                                     const std::int32_t* next,
+                                                     const std::int32_t* cells, int count,
+                                                     const PairState* records, PairBatch& batch,
+                                                     Test&& test) {
+  std::int32_t first[HierarchicalGrid::kMaxBlock];
+  int occupied = 0;
+  for (int c = 0; c < count; ++c) {
+    const std::int32_t j = head[cells[c]];
+    first[occupied] = j;
+    occupied += j >= 0;
+  }
+  int found = 0;
+  for (int c = 0; c < occupied; ++c) {
+    if (found > PairBatch::kCapacity - 2) {
+      test(found);
+      found = 0;
+    }
+    const std::int32_t j1 = first[c];
+    batch.state[found] = records + j1;
+    found += j1 != self;
+    const std::int32_t j2 = next[j1];
+    const bool second = j2 >= 0;
+    const std::int32_t k = second ? j2 : j1;
+    batch.state[found] = records + k;
+    found += second & (j2 != self);
+    for (std::int32_t j = second ? next[k] : -1; j >= 0; j = next[j]) {
+      if (found == PairBatch::kCapacity) {
+        test(found);
+        found = 0;
+      }
+      batch.state[found] = records + j;
+      found += j != self;
+    }
+  }
+  if (found > 0) test(found);
+}
+
 /// The particle whose contacts are sought, with what the batch test needs of the system.
 struct PairQuery {
   Vec3 position, velocity;  ///< m, m/s, at `clock`.
@@ -96,6 +146,45 @@ struct PairQuery {
   Vec3 gravity;             ///< m/s^2 (used with kGravity only).
   Domain domain;            ///< For the periodic images (used with kImage only).
 };
+
+/// A relax prediction's query for the reach test: whether a candidate can come within contact
+/// before `end` at all, bounded without square roots (see relax_collision).
+struct ReachQuery {
+  Vec3 position;  ///< The query's stored position, m.
+  double radius;  ///< m.
+  double sweep;   ///< Bound on how far the query flies before `end` (its reach_bound), m.
+  double end;     ///< s.
+  RelaxFlightBounds bounds;  ///< Bounds on every candidate's flight.
+  Domain domain;             ///< For the periodic images (used with kImage only).
+};
+
+/// Whether candidate b may come within contact of the query before q.end: false when the
+/// distance of the stored positions exceeds the radii plus both reach bounds (b's from its
+/// velocity and the flights' bounds: RelaxFlightBounds::reach_bound), with a relative margin of
+/// 1e-12 over the round-off by which a computed sum of magnitudes may fall short of a computed
+/// length. The scalar reference for reach_tests.
+template <bool kImage>
+inline bool may_reach(const ReachQuery& q, const PairState& b) {
+  double dx = q.position.x() - b.position.x();
+  double dy = q.position.y() - b.position.y();
+  double dz = q.position.z() - b.position.z();
+  if constexpr (kImage) {
+    Vec3 dr(dx, dy, dz);
+    q.domain.minimum_image(dr);
+    dx = dr.x();
+    dy = dr.y();
+    dz = dr.z();
+  }
+  const double sweep = q.bounds.reach_bound(b.velocity, q.end - b.clock);
+  const double reach = (q.radius + b.radius + q.sweep + sweep) * (1.0 + 1e-12);
+  return !(dx * dx + dy * dy + dz * dz > reach * reach);
+}
+
+/// Sets batch.time[k] for k < batch.count to 0 where may_reach<kImage>(query, candidate k)
+/// holds and to kNever where it does not, the same decision bit for bit, four candidates at a
+/// time. batch.earliest is left as it is.
+template <bool kImage>
+void reach_tests(const ReachQuery& query, PairBatch& batch);
 
 /// Fills batch.time[k] for k < batch.count with
 /// pair_contact<kGravity, kImage>(query..., candidate k...), bit for bit, and batch.earliest

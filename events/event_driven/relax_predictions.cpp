@@ -104,47 +104,60 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
     }
   }
   // Most candidates of a dense bed are too far away to be reached before the limit. They are
-  // ended by a looser form of relax_pair_time's first rejection: the query's sweep computed
-  // once per limit, the candidate's bounded from its record alone (flight_bounds_: its flight
-  // is not read), no square root. What passes is decided by relax_pair_time itself, so the
-  // events are the same bit for bit. (Without it, 90 % of a dense bed's prediction time went to
-  // that first rejection's four square roots.)
+  // ended by a looser form of relax_pair_time's first rejection (may_reach: the query's sweep
+  // computed once per limit, the candidate's bounded from its record alone by flight_bounds_,
+  // no square root), four at a time (reach_tests). What passes is decided by relax_pair_time
+  // itself, so the events are the same bit for bit. (Without it, 90 % of a dense bed's
+  // prediction time went to that first rejection's four square roots.)
   const HotState& a = hot_[i];
   const RelaxFlight& fa = flights_[i];
-  double end = std::min(horizon_, limit);
-  double sweep_a = fa.reach_bound(a.velocity, end - a.clock);
-  bool wrapped = false;
-  auto consider = [&](std::int32_t j) {
-    if (j == i) return;
-    const HotState& b = hot_[j];
-    Vec3 gap = a.position - b.position;
-    if (wrapped) system_.domain.minimum_image(gap);
-    // The factor covers the round-off by which a computed sum of magnitudes could fall short
-    // of a computed length.
-    const double reach =
-        (a.radius + b.radius + sweep_a + flight_bounds_.reach_bound(b.velocity, end - b.clock)) *
-        (1.0 + 1e-12);
-    if (gap.squaredNorm() > reach * reach) return;
-    assert(flights_[j].rate <= flight_bounds_.rate &&
-           flights_[j].drive.cwiseAbs().sum() <= flight_bounds_.drive);
+  ReachQuery query{a.position, a.radius, 0.0, 0.0, flight_bounds_, system_.domain};
+  auto set_limit = [&](double t) {
+    limit = t;
+    query.end = std::min(horizon_, limit);
+    query.sweep = fa.reach_bound(a.velocity, query.end - a.clock);
+  };
+  set_limit(limit);
+  // Whether candidate j's flight is within the bounds the test assumes (debug builds).
+  [[maybe_unused]] auto bounded = [&](std::int32_t j) {
+    return flights_[j].rate <= flight_bounds_.rate &&
+           flights_[j].drive.cwiseAbs().sum() <= flight_bounds_.drive;
+  };
+  auto consider = [&](std::int32_t j, bool wrapped) {
+    assert(bounded(j));
+    if (!(wrapped ? may_reach<true>(query, hot_[j]) : may_reach<false>(query, hot_[j]))) return;
     const double t = relax_pair_time(i, j, limit);
     if (t < best.time) {
       best = Event{t, j, counter_[j], EventKind::Pair};
-      limit = t;
-      end = std::min(horizon_, limit);
-      sweep_a = fa.reach_bound(a.velocity, end - a.clock);
+      set_limit(t);
     }
   };
+  // The own level's candidates, gathered in the cells' order and tested in batches; those that
+  // pass are considered one at a time in that order (the limit may have fallen since the batch
+  // was tested, so may_reach is asked again with the current one, as one at a time would).
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
+  bool wrapped = false;
   const int count = grid_.own_block(i, cells, wrapped);
-  const int level = grid_.level_of(i);
+  const std::int32_t* head = grid_.head_array(grid_.level_of(i));
   const std::int32_t* next = grid_.next_array();
-  for (int c = 0; c < count; ++c)
-    for (std::int32_t j = grid_.head(level, cells[c]); j >= 0; j = next[j]) consider(j);
-  if (grid_.levels().size() > 1) {
-    wrapped = true;  // the other levels' pieces may wrap: always take the nearest image
-    grid_.for_each_candidate_on_other_levels(i, hot_[i].radius, consider);
-  }
+  const HotState* hot = hot_.data();
+  PairBatch batch;
+  gather_candidates(i, head, next, cells, count, hot, batch, [&](int found) {
+    batch.pad_to_vectors(found, &a);  // the padding's answers are not read
+    if (wrapped)
+      reach_tests<true>(query, batch);
+    else
+      reach_tests<false>(query, batch);
+    for (int k = 0; k < found; ++k) {
+      const auto j = static_cast<std::int32_t>(batch.state[k] - hot);
+      assert(bounded(j));
+      if (batch.time[k] == 0.0) consider(j, wrapped);
+    }
+  });
+  if (grid_.levels().size() > 1)  // their pieces may wrap: always the nearest image
+    grid_.for_each_candidate_on_other_levels(i, a.radius, [&](std::int32_t j) {
+      if (j != i) consider(j, true);
+    });
   return best;
 }
 

@@ -126,11 +126,12 @@ CAROM_LANES_INLINE Lanes magnitude(Lanes x) {
 }
 
 template <bool kImage>
-CAROM_LANES_INLINE void reach_tests_impl(const ReachQuery& q, PairBatch& batch) {
+CAROM_LANES_INLINE std::uint64_t reach_tests_impl(const ReachQuery& q, const PairBatch& batch) {
   const Lanes pax = splat(q.position.x()), pay = splat(q.position.y()), paz = splat(q.position.z());
   const Lanes radius_a = splat(q.radius), sweep_a = splat(q.sweep), end = splat(q.end);
   const Lanes drive = splat(q.bounds.drive), rate = splat(q.bounds.rate), half = splat(0.5);
-  const Lanes margin = splat(1.0 + 1e-12), zero = splat(0.0), never = splat(kNever);
+  const Lanes margin = splat(1.0 + 1e-12);
+  std::uint64_t reached = 0;
   const Vec3 length = q.domain.length();
   for (int k = 0; k < batch.count; k += 4) {
     Lanes rows[4], place[4], motion[4];
@@ -149,20 +150,21 @@ CAROM_LANES_INLINE void reach_tests_impl(const ReachQuery& q, PairBatch& batch) 
     const Lanes speed = magnitude(motion[0]) + magnitude(motion[1]) + magnitude(motion[2]);
     const Lanes sweep = span * (speed + half * span * (drive + rate * speed));
     const Lanes reach = (radius_a + motion[3] + sweep_a + sweep) * margin;
-    const Lanes t = select(dx * dx + dy * dy + dz * dz > reach * reach, never, zero);
-    __builtin_memcpy(batch.time + k, &t, sizeof t);
+    const Mask beyond = dx * dx + dy * dy + dz * dz > reach * reach;
+    for (int l = 0; l < 4; ++l) reached |= std::uint64_t(beyond[l] == 0) << (k + l);
   }
+  return reached;
 }
 }  // namespace
 
-#define CAROM_REACH_TESTS(I)                                                     \
-  __attribute__((target_clones("avx2", "default"))) static void reach_tests_##I( \
-      const ReachQuery& q, PairBatch& batch) {                                   \
-    reach_tests_impl<I>(q, batch);                                               \
-  }                                                                              \
-  template <>                                                                    \
-  void reach_tests<I>(const ReachQuery& q, PairBatch& batch) {                   \
-    reach_tests_##I(q, batch);                                                   \
+#define CAROM_REACH_TESTS(I)                                                              \
+  __attribute__((target_clones("avx2", "default"))) static std::uint64_t reach_tests_##I( \
+      const ReachQuery& q, const PairBatch& batch) {                                      \
+    return reach_tests_impl<I>(q, batch);                                                 \
+  }                                                                                       \
+  template <>                                                                             \
+  std::uint64_t reach_tests<I>(const ReachQuery& q, const PairBatch& batch) {             \
+    return reach_tests_##I(q, batch);                                                     \
   }
 
 CAROM_REACH_TESTS(false)

@@ -180,11 +180,12 @@ inline bool may_reach(const ReachQuery& q, const PairState& b) {
   return !(dx * dx + dy * dy + dz * dz > reach * reach);
 }
 
-/// Sets batch.time[k] for k < batch.count to 0 where may_reach<kImage>(query, candidate k)
-/// holds and to kNever where it does not, the same decision bit for bit, four candidates at a
-/// time. batch.earliest is left as it is.
+/// The candidates k < batch.count for which may_reach<kImage>(query, candidate k) holds, as
+/// the bits k of the result (the same decision bit for bit), four candidates at a time.
+/// batch.time and batch.earliest are left as they are.
 template <bool kImage>
-void reach_tests(const ReachQuery& query, PairBatch& batch);
+std::uint64_t reach_tests(const ReachQuery& query, const PairBatch& batch);
+static_assert(PairBatch::kCapacity <= 64, "reach_tests answers with one bit per candidate");
 
 /// Fills batch.time[k] for k < batch.count with
 /// pair_contact<kGravity, kImage>(query..., candidate k...), bit for bit, and batch.earliest

@@ -2,6 +2,7 @@
 // step): pairs, walls, the cylinder and grid cells. Nothing is predicted past the next fluid step
 // (horizon_), where every particle is synchronised and predicted again.
 #include <algorithm>
+#include <bit>
 #include <cassert>
 
 #include "core/relax_roots.hpp"
@@ -144,15 +145,15 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
   PairBatch batch;
   gather_candidates(i, head, next, cells, count, hot, batch, [&](int found) {
     batch.pad_to_vectors(found, &a);  // the padding's answers are not read
-    if (wrapped)
-      reach_tests<true>(query, batch);
-    else
-      reach_tests<false>(query, batch);
-    for (int k = 0; k < found; ++k) {
-      const auto j = static_cast<std::int32_t>(batch.state[k] - hot);
-      assert(bounded(j));
-      if (batch.time[k] == 0.0) consider(j, wrapped);
-    }
+#ifndef NDEBUG
+    for (int k = 0; k < found; ++k)
+      assert(bounded(static_cast<std::int32_t>(batch.state[k] - hot)));
+#endif
+    std::uint64_t reached =
+        wrapped ? reach_tests<true>(query, batch) : reach_tests<false>(query, batch);
+    reached &= found == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << found) - 1;
+    for (; reached != 0; reached &= reached - 1)  // in the cells' order
+      consider(static_cast<std::int32_t>(batch.state[std::countr_zero(reached)] - hot), wrapped);
   });
   if (grid_.levels().size() > 1)  // their pieces may wrap: always the nearest image
     grid_.for_each_candidate_on_other_levels(i, a.radius, [&](std::int32_t j) {

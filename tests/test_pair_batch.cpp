@@ -20,18 +20,22 @@
 namespace carom {
 namespace {
 
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// A box periodic in x and z, walled in y.
+Domain test_box() {
+  Domain domain;
+  domain.lower = Vec3(-1.0, -2.0, 0.5);
+  domain.upper = Vec3(9.0, 8.0, 10.5);
+  domain.periodic = {true, false, true};
+  return domain;
 }
 
 template <bool kGravity, bool kImage>
 void check_random_batches(std::uint64_t seed) {
   Rng rng(seed);
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
-  Domain domain;
-  domain.lower = Vec3(-1.0, -2.0, 0.5);
-  domain.upper = Vec3(9.0, 8.0, 10.5);
-  domain.periodic = {true, false, true};
+  const Domain domain = test_box();
   const Vec3 gravity(0.3, -1.1, -9.81);
   int checked = 0;
   for (int round = 0; round < 400; ++round) {
@@ -104,10 +108,7 @@ template <bool kImage>
 void check_random_reach_batches(std::uint64_t seed) {
   Rng rng(seed);
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
-  Domain domain;
-  domain.lower = Vec3(-1.0, -2.0, 0.5);
-  domain.upper = Vec3(9.0, 8.0, 10.5);
-  domain.periodic = {true, false, true};
+  const Domain domain = test_box();
   int checked = 0, refused = 0, accepted = 0;
   for (int round = 0; round < 400; ++round) {
     RelaxFlightBounds bounds{uniform(0.0, 40.0), uniform(0.0, 100.0)};

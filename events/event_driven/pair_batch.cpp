@@ -46,6 +46,17 @@ CAROM_LANES_INLINE void transpose(const Lanes (&rows)[4], Lanes (&columns)[4]) {
   columns[3] = CAROM_SHUFFLE(odd01, odd23, 2, 3, 6, 7);
 }
 
+/// Candidates k..k+3's records as columns: place = {x, y, z, clock}, motion = {vx, vy, vz,
+/// radius}, each with the four candidates in its lanes.
+CAROM_LANES_INLINE void load_records(const PairBatch& batch, int k, Lanes (&place)[4],
+                                     Lanes (&motion)[4]) {
+  Lanes rows[4];
+  for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->position.x());
+  transpose(rows, place);
+  for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->velocity.x());
+  transpose(rows, motion);
+}
+
 /// Maps one separation component to its nearest image, as Domain::minimum_image.
 CAROM_LANES_INLINE Lanes nearest_image(Lanes s, double length) {
   const Lanes half = splat(0.5 * length), l = splat(length);
@@ -65,11 +76,8 @@ CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch)
   const Mask lane = Mask{0, 1, 2, 3};
   for (int k = 0; k < batch.count; k += 4) {
     // Candidate k + l's record is rows {position, clock} and {velocity, radius}.
-    Lanes rows[4], place[4], motion[4];
-    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->position.x());
-    transpose(rows, place);
-    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->velocity.x());
-    transpose(rows, motion);
+    Lanes place[4], motion[4];
+    load_records(batch, k, place, motion);
     const Lanes clock_b = place[3];
     const Lanes t_ref = select(clock_a > clock_b, clock_a, clock_b);
     const Lanes dt_a = t_ref - clock_a, dt_b = t_ref - clock_b;
@@ -134,11 +142,8 @@ CAROM_LANES_INLINE std::uint64_t reach_tests_impl(const ReachQuery& q, const Pai
   std::uint64_t reached = 0;
   const Vec3 length = q.domain.length();
   for (int k = 0; k < batch.count; k += 4) {
-    Lanes rows[4], place[4], motion[4];
-    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->position.x());
-    transpose(rows, place);
-    for (int l = 0; l < 4; ++l) rows[l] = load(&batch.state[k + l]->velocity.x());
-    transpose(rows, motion);
+    Lanes place[4], motion[4];
+    load_records(batch, k, place, motion);
     Lanes dx = pax - place[0], dy = pay - place[1], dz = paz - place[2];
     if constexpr (kImage) {
       if (q.domain.periodic[0]) dx = nearest_image(dx, length.x());

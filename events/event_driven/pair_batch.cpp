@@ -1,4 +1,5 @@
-// The batch pair test (see pair_batch.hpp): pair_contact's arithmetic on four partners at once.
+// The batch pair test and the relax reach test (see pair_batch.hpp): pair_contact's and
+// may_reach's arithmetic on four partners at once.
 //
 // Written with GCC/Clang vector extensions: a 4-wide vector of doubles compiles to two SSE2
 // operations in the default clone and to one AVX operation in the "avx2" clone (chosen at

@@ -8,6 +8,10 @@
 /// at once without branches (SSE2 on any x86-64, AVX2 where the processor has it, picked at
 /// run time). The operations and their order are those of pair_contact (below), so the times are
 /// the same to the last bit (test_predictions checks it), and no fused multiply-add is used.
+///
+/// Relax flights have no closed-form contact time; their predictions first end the candidates
+/// that cannot be reached at all (reach_tests, may_reach: a bound on how far each can fly), in
+/// the same way. Both walk the grid's cells with gather_candidates.
 #include <cstdint>
 
 #include "core/cell_grid.hpp"

@@ -130,6 +130,8 @@ CAROM_LANES_INLINE void contact_times_impl(const PairQuery& q, PairBatch& batch)
   }
   batch.earliest = best;
 }
+
+/// |x| in each lane (the same value as std::abs; -0 stays -0, which compares and adds as 0).
 CAROM_LANES_INLINE Lanes magnitude(Lanes x) {
   return select(x < splat(0.0), -x, x);
 }

@@ -1,6 +1,9 @@
 #include "core/worker_pool.hpp"
 
 #include <cstdlib>
+#ifdef __linux__
+#include <sched.h>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -92,6 +95,12 @@ int WorkerPool::default_threads() {
     throw std::invalid_argument("CAROM_THREADS = \"" + std::string(text) +
                                 "\": must be an integer from 1 to 1024 (threads of one run)");
   }
+#ifdef __linux__
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof(allowed), &allowed) == 0 && CPU_COUNT(&allowed) > 0)
+    return CPU_COUNT(&allowed);
+#endif
   const unsigned hardware = std::thread::hardware_concurrency();
   return hardware == 0 ? 1 : static_cast<int>(hardware);
 }

@@ -30,7 +30,9 @@ class WorkerPool {
   void for_chunks(std::size_t n, const std::function<void(std::size_t, std::size_t)>& body);
 
   /// The thread count a run uses when its scene leaves it to carom: the environment variable
-  /// CAROM_THREADS when set (an integer >= 1), else the machine's hardware threads.
+  /// CAROM_THREADS when set (an integer >= 1), else the hardware threads this process may run
+  /// on (its CPU affinity: `taskset -c 1 carom ...` or a batch job's share of a node counts
+  /// its own cores, not the machine's).
   static int default_threads();
 
  private:

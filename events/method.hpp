@@ -18,6 +18,10 @@
 #include "events/statistics.hpp"
 
 namespace carom {
+class SideThread;  // core/side_thread.hpp
+}
+
+namespace carom {
 
 /// Kinetic, potential, elastic and dissipated energy at the current time, J.
 struct Energies {
@@ -80,6 +84,9 @@ struct GlobalStep {
   std::vector<RelaxFlight>& flights;
   /// Particles to remove and add (the flow step); the action must not resize `particles` itself.
   ParticleChange change{};
+  /// A second thread for halves of the action's per-particle loops (for_halves), or null. The
+  /// action's results must not depend on it.
+  SideThread* side = nullptr;
 };
 
 /// The interface a collision method offers the rest of carom. Particle indices are the

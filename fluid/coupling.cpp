@@ -105,10 +105,10 @@ double GasCoupling::inlet_velocity(int side, double t) const {
   return s.velocity;
 }
 
-void GasCoupling::step(double t, const ParticleStore& particles,
-                       std::vector<RelaxFlight>& flights) {
+void GasCoupling::step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights,
+                       SideThread* side) {
   auto start = std::chrono::steady_clock::now();
-  map_particles(particles);
+  map_particles(particles, side);
   times_.mapping += seconds_since(start);
 
   start = std::chrono::steady_clock::now();
@@ -117,16 +117,24 @@ void GasCoupling::step(double t, const ParticleStore& particles,
   std::vector<Vec3> solid_velocity(cells, Vec3::Zero());
   const bool two_way = settings_.coupling == CouplingLevel::TwoWay;
   if (two_way) {
-    // Drag coefficients at the slip seen now (gas of the last step), mapped with the weights.
-    std::vector<double> k_sum(cells, 0.0);
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-      Vec3 u = Vec3::Zero();
-      double eps = 0.0;
-      for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
-        u += weights_[w].second * solver_->cell_velocity(weights_[w].first);
-        eps += weights_[w].second * porosity_[weights_[w].first];
+    // Drag coefficients at the slip seen now (gas of the last step), mapped with the weights:
+    // each particle's in two halves, their sums in particle order.
+    const std::size_t n = particles.size();
+    particle_drag_.resize(n);
+    for_halves(side, n, [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t i = begin; i < end; ++i) {
+        Vec3 u = Vec3::Zero();
+        double eps = 0.0;
+        for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
+          u += weights_[w].second * solver_->cell_velocity(weights_[w].first);
+          eps += weights_[w].second * porosity_[weights_[w].first];
+        }
+        particle_drag_[i] = drag_coefficient(i, particles, eps, (u - particles.velocity[i]).norm());
       }
-      const double k = drag_coefficient(i, particles, eps, (u - particles.velocity[i]).norm());
+    });
+    std::vector<double> k_sum(cells, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double k = particle_drag_[i];
       for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
         const auto [c, fraction] = weights_[w];
         k_sum[c] += fraction * k;
@@ -154,28 +162,39 @@ void GasCoupling::step(double t, const ParticleStore& particles,
   times_.solve += seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  set_flights(particles, flights);
+  set_flights(particles, flights, side);
   times_.interpolation += seconds_since(start);
   ++times_.steps;
 }
 
-void GasCoupling::map_particles(const ParticleStore& particles) {
+void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side) {
   const std::size_t n = particles.size(), cells = porosity_.size();
+  // Each sphere's cell shares (the geometry: most of the cost) in two halves, in order...
+  share_count_.resize(n);
+  for_halves(side, n, [&](std::size_t begin, std::size_t end, int part) {
+    std::vector<CellShare>& shares = half_shares_[part];
+    shares.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::size_t before = shares.size();
+      split_sphere(layout_, domain_.periodic, particles.position[i], particles.radius[i], shares);
+      share_count_[i] = static_cast<std::uint32_t>(shares.size() - before);
+    }
+  });
+  // ... then the weights and the cells' sums in particle order, as one thread would.
   weight_start_.assign(n + 1, 0);
   weights_.clear();
   std::vector<double> solid(cells, 0.0), d3(cells, 0.0), d2(cells, 0.0);
-  std::vector<CellShare> shares;
+  const CellShare* share = half_shares_[0].data();
   for (std::size_t i = 0; i < n; ++i) {
+    if (i == n / 2) share = half_shares_[1].data();
     weight_start_[i] = weights_.size();
     const double a = particles.radius[i];
     const double volume = 4.0 / 3.0 * std::numbers::pi * a * a * a;
-    shares.clear();
-    split_sphere(layout_, domain_.periodic, particles.position[i], a, shares);
-    for (const CellShare& share : shares) {
-      weights_.emplace_back(share.cell, share.fraction);
-      solid[share.cell] += share.fraction * volume;
-      d3[share.cell] += share.fraction * 8.0 * a * a * a;
-      d2[share.cell] += share.fraction * 4.0 * a * a;
+    for (const CellShare* end = share + share_count_[i]; share != end; ++share) {
+      weights_.emplace_back(share->cell, share->fraction);
+      solid[share->cell] += share->fraction * volume;
+      d3[share->cell] += share->fraction * 8.0 * a * a * a;
+      d2[share->cell] += share->fraction * 4.0 * a * a;
     }
   }
   weight_start_[n] = weights_.size();
@@ -204,46 +223,64 @@ double GasCoupling::drag_coefficient(std::size_t i, const ParticleStore& particl
   return closure_->drag_coefficient(input);
 }
 
-void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights) {
-  total_drag_ = Vec3::Zero();
+void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights,
+                              SideThread* side) {
   const std::size_t n = particles.size();
   flights.resize(n);
+  particle_gas_velocity_.resize(n);
+  particle_drag_.resize(n);
+  particle_porosity_.resize(n);
+  particle_pressure_gradient_.resize(n);
+  longitudinal_rates_.resize(keep_longitudinal_rates_ ? n : 0);
+  // Each particle's gas, drag and flight in two halves...
+  for_halves(side, n, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Vec3 u = Vec3::Zero(), grad_p = Vec3::Zero();
+      double eps = 0.0;
+      for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
+        const auto [c, fraction] = weights_[w];
+        u += fraction * solver_->cell_velocity(c);
+        grad_p += fraction * solver_->pressure_gradient(c);
+        eps += fraction * porosity_[c];
+      }
+      const Vec3& v = particles.velocity[i];
+      const double slip = (u - v).norm();
+      const double k = drag_coefficient(i, particles, eps, slip);
+      const double rate = k / particles.mass[i];
+      if (keep_longitudinal_rates_) {
+        // d(K s)/ds by a forward difference over a relative slip change of 1e-6 (the drag laws
+        // are smooth there; at zero slip the derivative is K itself).
+        const double ds = 1e-6 * slip;
+        const double tangent =
+            slip > 0.0
+                ? (drag_coefficient(i, particles, eps, slip + ds) * (slip + ds) - k * slip) / ds
+                : k;
+        longitudinal_rates_[i] = std::max(rate, tangent / particles.mass[i]);
+      }
+      const std::uint32_t s = particles.species[i];
+      flights[i] = RelaxFlight{rate, gravity_ + rate * u - grad_p / species_density_[s]};
+      particle_gas_velocity_[i] = u;
+      particle_drag_[i] = k;
+      particle_porosity_[i] = eps;
+      particle_pressure_gradient_[i] = grad_p;
+    }
+  });
+  // ... and their sums in particle order.
+  total_drag_ = Vec3::Zero();
   species_gas_velocity_.assign(species_density_.size(), Vec3::Zero());
   species_gas_force_.assign(species_density_.size(), Vec3::Zero());
   species_porosity_.assign(species_density_.size(), 0.0);
   species_count_.assign(species_density_.size(), 0);
-  particle_gas_velocity_.resize(n);
-  longitudinal_rates_.resize(keep_longitudinal_rates_ ? n : 0);
   for (std::size_t i = 0; i < n; ++i) {
-    Vec3 u = Vec3::Zero(), grad_p = Vec3::Zero();
-    double eps = 0.0;
-    for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
-      const auto [c, fraction] = weights_[w];
-      u += fraction * solver_->cell_velocity(c);
-      grad_p += fraction * solver_->pressure_gradient(c);
-      eps += fraction * porosity_[c];
-    }
+    const Vec3& u = particle_gas_velocity_[i];
     const Vec3& v = particles.velocity[i];
-    const double slip = (u - v).norm();
-    const double k = drag_coefficient(i, particles, eps, slip);
-    const double rate = k / particles.mass[i];
-    if (keep_longitudinal_rates_) {
-      // d(K s)/ds by a forward difference over a relative slip change of 1e-6 (the drag laws
-      // are smooth there; at zero slip the derivative is K itself).
-      const double ds = 1e-6 * slip;
-      const double tangent =
-          slip > 0.0
-              ? (drag_coefficient(i, particles, eps, slip + ds) * (slip + ds) - k * slip) / ds
-              : k;
-      longitudinal_rates_[i] = std::max(rate, tangent / particles.mass[i]);
-    }
+    const double k = particle_drag_[i];
     const std::uint32_t s = particles.species[i];
-    flights[i] = RelaxFlight{rate, gravity_ + rate * u - grad_p / species_density_[s]};
     total_drag_ += k * (u - v);
-    particle_gas_velocity_[i] = u;
     species_gas_velocity_[s] += u;
-    species_gas_force_[s] += k * (u - v) - (particles.mass[i] / species_density_[s]) * grad_p;
-    species_porosity_[s] += eps;
+    species_gas_force_[s] +=
+        k * (u - v) - (particles.mass[i] / species_density_[s]) * particle_pressure_gradient_[i];
+    species_porosity_[s] += particle_porosity_[i];
     ++species_count_[s];
   }
 }

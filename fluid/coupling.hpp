@@ -23,6 +23,7 @@
 #include "core/domain.hpp"
 #include "core/particles.hpp"
 #include "core/relax_flight.hpp"
+#include "core/side_thread.hpp"
 #include "core/wall.hpp"
 #include "gas_settings.hpp"
 #include "gas_solver.hpp"
@@ -57,7 +58,11 @@ class GasCoupling {
   /// Maps the particles (porosity) without advancing the gas: the state at t = 0 for outputs.
   void prepare(const ParticleStore& particles);
   /// The fluid step at time t: particles as of t; sets flights[i] for [t, t + dt).
-  void step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights);
+  /// Its per-particle parts (the spheres' cell shares, drag coefficients, interpolation) run in
+  /// two halves on this and the `side` thread when one is given; every sum over particles is
+  /// taken in particle order afterwards, so the results are the same bit for bit.
+  void step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights,
+            SideThread* side = nullptr);
 
   const GasSettings& settings() const { return settings_; }
   /// Inlet superficial velocity of side s at time t (the ramp applied), m/s.
@@ -118,10 +123,11 @@ class GasCoupling {
   void restore(const h5::Group& group);
 
  private:
-  void map_particles(const ParticleStore& particles);
+  void map_particles(const ParticleStore& particles, SideThread* side = nullptr);
   /// Side s's jet profile at time t (the ramp applied), m/s.
   std::vector<double> scaled_profile(int side, double t) const;
-  void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights);
+  void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights,
+                   SideThread* side);
   /// K_i (kg/s) of particle i from the closure at slip speed `slip` and porosity eps.
   double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
                           double slip) const;
@@ -140,6 +146,12 @@ class GasCoupling {
   // Per particle, as of the last mapping.
   std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
   std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).
+  // Per-particle scratch of a step, filled in two halves (see step).
+  std::array<std::vector<CellShare>, 2> half_shares_;  ///< Each half's cell shares in order.
+  std::vector<std::uint32_t> share_count_;             ///< Cell shares per particle.
+  std::vector<double> particle_drag_;                  ///< K_i, kg/s.
+  std::vector<double> particle_porosity_;              ///< eps_i interpolated.
+  std::vector<Vec3> particle_pressure_gradient_;       ///< grad p_i interpolated, Pa/m.
   std::vector<Vec3> species_gas_velocity_;       ///< Sum of u_i per species (last step), m/s.
   std::vector<Vec3> species_gas_force_;          ///< Sum of K_i (u_i - v_i) - V_i grad p_i, N.
   std::vector<double> species_porosity_;         ///< Sum of eps_i per species (last step).

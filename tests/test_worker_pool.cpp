@@ -2,11 +2,15 @@
 // promises, for any thread count; an exception in any chunk reaches the caller; the pool is
 // reusable after one.
 #include <gtest/gtest.h>
+#ifdef __linux__
+#include <sched.h>
+#endif
 
 #include <atomic>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -70,6 +74,22 @@ TEST(WorkerPool, ThreadCountFromTheEnvironment) {
   }
   unsetenv("CAROM_THREADS");
   EXPECT_GE(WorkerPool::default_threads(), 1);
+#ifdef __linux__
+  // Without the variable: the CPUs the calling thread may run on (as under `taskset -c 1`),
+  // here a thread of this test pinned to one CPU, so the rest of the process keeps its own.
+  int pinned = 0;
+  std::thread([&] {
+    cpu_set_t allowed, one;
+    ASSERT_EQ(sched_getaffinity(0, sizeof(allowed), &allowed), 0);
+    int first = 0;
+    while (!CPU_ISSET(first, &allowed)) ++first;
+    CPU_ZERO(&one);
+    CPU_SET(first, &one);
+    ASSERT_EQ(sched_setaffinity(0, sizeof(one), &one), 0);
+    pinned = WorkerPool::default_threads();
+  }).join();
+  EXPECT_EQ(pinned, 1);
+#endif
   if (saved) setenv("CAROM_THREADS", keep.c_str(), 1);
   EXPECT_THROW(WorkerPool(0), std::invalid_argument);
 }

@@ -63,15 +63,15 @@ Event EventDrivenEngine::straight_cell_crossing(std::int32_t i) const {
 }
 
 template <>
-void EventDrivenEngine::predict<StraightFlights>(std::int32_t i, bool new_trajectory) {
+void EventDrivenEngine::plan<StraightFlights>(std::int32_t i, bool new_trajectory) {
   if (new_trajectory) agenda_[i].crossing = straight_cell_crossing(i);
-  predict_ballistic<false>(i);
+  plan_ballistic<false>(i);
 }
 
 template <>
-void EventDrivenEngine::predict<GravityFlights>(std::int32_t i, bool new_trajectory) {
+void EventDrivenEngine::plan<GravityFlights>(std::int32_t i, bool new_trajectory) {
   if (new_trajectory) agenda_[i].crossing = cell_crossing(i);
-  predict_ballistic<true>(i);
+  plan_ballistic<true>(i);
 }
 
 template <>
@@ -85,7 +85,7 @@ void EventDrivenEngine::predict_after_crossing<GravityFlights>(std::int32_t i, i
 }
 
 template <bool kGravity>
-void EventDrivenEngine::predict_ballistic(std::int32_t i) {
+void EventDrivenEngine::plan_ballistic(std::int32_t i) {
   Event best;
   for (std::size_t w = 0; w < system_.walls.size(); ++w) {
     const double t = wall_time(i, system_.walls[w]);
@@ -102,7 +102,6 @@ void EventDrivenEngine::predict_ballistic(std::int32_t i) {
     best = Event{best_pair_time, best_partner, counter_[best_partner], EventKind::Pair};
   if (grid_.levels().size() > 1) scan_other_levels<kGravity>(i, best);
   agenda_[i].collision = best;
-  schedule(i);
 }
 
 template <bool kGravity>
@@ -184,7 +183,7 @@ void EventDrivenEngine::scan_slab(std::int32_t i, int axis, int direction) {
 template void EventDrivenEngine::scan_slab<true>(std::int32_t, int, int);
 template void EventDrivenEngine::scan_slab<false>(std::int32_t, int, int);
 
-template void EventDrivenEngine::predict_ballistic<true>(std::int32_t);
-template void EventDrivenEngine::predict_ballistic<false>(std::int32_t);
+template void EventDrivenEngine::plan_ballistic<true>(std::int32_t);
+template void EventDrivenEngine::plan_ballistic<false>(std::int32_t);
 
 }  // namespace carom

@@ -52,8 +52,7 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
   if (statistics_.tagged.any()) statistics_.tagged.book_pair(i, j, si, sj, outcome.impulse);
   ++counter_[i];
   ++counter_[j];
-  predict<Flight>(i);
-  predict<Flight>(j);
+  predict_pair<Flight>(i, j);
   book_collision(i, t, j);
   book_collision(j, t, i);
   bi.last_collision = bj.last_collision = t;

@@ -23,6 +23,7 @@
 #include "core/cell_grid.hpp"
 #include "core/flight_model.hpp"
 #include "core/relax_flight.hpp"
+#include "core/side_thread.hpp"
 #include "core/system.hpp"
 #include "core/worker_pool.hpp"
 #include "events/event_driven/calendar.hpp"
@@ -96,6 +97,9 @@ class EventDrivenEngine final : public CollisionMethod {
   const System& system() const override { return system_; }
   const EventDrivenOptions& options() const { return options_; }
   const RunStatistics& statistics() const override { return statistics_; }
+  /// Predictions made on the side thread so far (predict_pair; changes no result): for tests
+  /// and diagnostics.
+  unsigned long long side_predictions() const { return side_ ? side_->side_runs() : 0; }
   const HierarchicalGrid& grid() const { return grid_; }
 
   /// Particle i's position at the current time, m (its stored state is not changed).
@@ -162,6 +166,9 @@ class EventDrivenEngine final : public CollisionMethod {
   /// The worker threads for a loop over every particle, or null to run it on this thread
   /// (one thread asked for, or too few particles to be worth waking the workers).
   WorkerPool* shared_workers();
+  /// The thread on which one of a collision's two predictions is made, or null (one thread
+  /// asked for, or too few particles: see side_thread's definition).
+  SideThread* side_thread();
   /// Predicts all of particle i's events for the flights of this run.
   void predict_any(std::int32_t i);
   /// Removes and adds particles (a flow step; every particle is synchronised at time_ and the
@@ -171,17 +178,43 @@ class EventDrivenEngine final : public CollisionMethod {
 
   // --- The prediction interface: one implementation per flight --------------------------------
   /// Predicts particle i's next collision, and its next cell crossing when its trajectory is
-  /// new (a particle whose predicted partner moved away keeps its crossing); schedules it.
+  /// new (a particle whose predicted partner moved away keeps its crossing), into its agenda.
+  /// Reads the records, the grid and the counters and writes agenda_[i] only: the plans of two
+  /// particles may be made at once.
   template <class Flight>
-  void predict(std::int32_t i, bool new_trajectory = true);
+  void plan(std::int32_t i, bool new_trajectory = true);
+  /// plan, then schedule.
+  template <class Flight>
+  void predict(std::int32_t i, bool new_trajectory = true) {
+    plan<Flight>(i, new_trajectory);
+    schedule(i);
+  }
+  /// Predicts and schedules both partners of a collision: the two plans at once when a side
+  /// thread is there (side_thread), scheduled in the order i, j in any case.
+  template <class Flight>
+  void predict_pair(std::int32_t i, std::int32_t j) {
+    if (SideThread* side = side_thread()) {
+      side->run_beside([&] { plan<Flight>(j); },
+                       [&] {
+                         plan<Flight>(i);
+                         schedule(i);  // the calendar: this thread only
+                       });
+    } else {
+      plan<Flight>(i);
+      schedule(i);
+      plan<Flight>(j);
+    }
+    schedule(j);
+  }
   /// After particle i crossed a cell face on `axis` in `direction` (same trajectory): its next
   /// crossing, and partners in the cells that just came into reach; schedules it.
   template <class Flight>
   void predict_after_crossing(std::int32_t i, int axis, int direction);
 
   // Ballistic flights (ballistic_predictions.cpp).
+  /// Particle i's earliest wall or pair collision, into its agenda.
   template <bool kGravity>
-  void predict_ballistic(std::int32_t i);
+  void plan_ballistic(std::int32_t i);
   template <bool kGravity>
   void scan_slab(std::int32_t i, int axis, int direction);
   double wall_time(std::int32_t i, const Wall& wall) const;
@@ -208,7 +241,8 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Reads the records, the grid and the counters only: safe to call for many particles at once.
   Event relax_collision(std::int32_t i, double limit) const;
   /// After a synchronising action: every particle's events predicted again (relax flights:
-  /// computed on the worker threads, scheduled in particle order; else one by one).
+  /// planned in two halves on this and the side thread, or in chunks on the worker threads
+  /// from 3 threads on, scheduled in particle order; else one by one).
   template <class Flight>
   void predict_all();
 
@@ -326,6 +360,9 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Threads for predict_all (made at the first synchronising action that has enough
   /// particles to share; shared by copies of the engine, which use it one at a time).
   std::shared_ptr<WorkerPool> workers_;
+  /// The side thread of predict_pair (made at the first collision of a run with enough
+  /// particles and threads; shared by copies of the engine, which use it one at a time).
+  std::shared_ptr<SideThread> side_;
   int threads_ = 1;  ///< options_.threads, or the default it stands for (resolved at construction).
   bool restored_ = false;                      ///< Built from an EngineState (its events stand).
   std::vector<std::pair<std::string, double>> restored_action_times_;
@@ -334,11 +371,11 @@ class EventDrivenEngine final : public CollisionMethod {
 
 // The prediction interface's implementations (ballistic_predictions.cpp, relax_predictions.cpp).
 template <>
-void EventDrivenEngine::predict<StraightFlights>(std::int32_t i, bool new_trajectory);
+void EventDrivenEngine::plan<StraightFlights>(std::int32_t i, bool new_trajectory);
 template <>
-void EventDrivenEngine::predict<GravityFlights>(std::int32_t i, bool new_trajectory);
+void EventDrivenEngine::plan<GravityFlights>(std::int32_t i, bool new_trajectory);
 template <>
-void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajectory);
+void EventDrivenEngine::plan<RelaxFlights>(std::int32_t i, bool new_trajectory);
 template <>
 void EventDrivenEngine::predict_all<RelaxFlights>();
 

@@ -22,8 +22,10 @@ struct EventDrivenOptions {
   int grid_subdivision = 0;
   /// Threads of one run (`[engine] threads`): with relax flights, the predictions of every
   /// particle after a fluid step are shared among them (the calendar is then filled in particle
-  /// order, so results are the same bit for bit for any count). 0 (default): CAROM_THREADS
-  /// when set, else the machine's hardware threads (core/worker_pool.hpp).
+  /// order), and from 2 on a collision's two predictions are made at once, one on a side thread
+  /// (core/side_thread.hpp; scheduled in the same order), so results are the same bit for bit
+  /// for any count. 0 (default): CAROM_THREADS when set, else the cores this process may run on
+  /// (core/worker_pool.hpp).
   int threads = 0;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.

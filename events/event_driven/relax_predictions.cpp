@@ -163,18 +163,16 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
 }
 
 template <>
-void EventDrivenEngine::predict<RelaxFlights>(std::int32_t i, bool new_trajectory) {
+void EventDrivenEngine::plan<RelaxFlights>(std::int32_t i, bool new_trajectory) {
   if (horizon_ == kNever) {
     // No fluid step registered yet: nothing can be predicted (registering one predicts all).
     agenda_[i].collision = agenda_[i].crossing = Event{};
-    schedule(i);
     return;
   }
   if (new_trajectory) agenda_[i].crossing = relax_cell_crossing(i);
   // Only events before the next crossing matter: a crossing predicts everything again (see
   // cross_cell).
   agenda_[i].collision = relax_collision(i, agenda_[i].crossing.time);
-  schedule(i);
 }
 
 WorkerPool* EventDrivenEngine::shared_workers() {
@@ -188,20 +186,16 @@ WorkerPool* EventDrivenEngine::shared_workers() {
 template <>
 void EventDrivenEngine::predict_all<RelaxFlights>() {
   const std::size_t n = hot_.size();
-  WorkerPool* workers = horizon_ == kNever ? nullptr : shared_workers();
-  if (workers == nullptr) {
-    for (std::size_t i = 0; i < n; ++i) predict<RelaxFlights>(static_cast<std::int32_t>(i));
-    return;
-  }
   // Each particle's agenda is its own cache line (Agenda is aligned to 64 bytes), and the
-  // predictions read only what no prediction writes: any split gives the same agendas.
-  workers->for_chunks(n, [this](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const auto i = static_cast<std::int32_t>(k);
-      agenda_[k].crossing = relax_cell_crossing(i);
-      agenda_[k].collision = relax_collision(i, agenda_[k].crossing.time);
-    }
-  });
+  // plans read only what no plan writes: any split gives the same agendas.
+  auto plan_range = [this](std::size_t begin, std::size_t end, int = 0) {
+    for (std::size_t k = begin; k < end; ++k) plan<RelaxFlights>(static_cast<std::int32_t>(k));
+  };
+  WorkerPool* workers = threads_ > 2 && horizon_ != kNever ? shared_workers() : nullptr;
+  if (workers != nullptr)
+    workers->for_chunks(n, plan_range);
+  else  // two halves on this and the side thread (no wake-up of a sleeping pool), or one here
+    for_halves(horizon_ != kNever ? side_thread() : nullptr, n, plan_range);
   // The calendar receives the same updates in the same order as one prediction at a time.
   for (std::size_t i = 0; i < n; ++i) schedule(static_cast<std::int32_t>(i));
 }

@@ -28,7 +28,7 @@ std::unique_ptr<GasCoupling> attach_gas(CollisionMethod& sim, const Scene& scene
   // The fluid step comes first in the calendar, so at a common time the kick uses the new drag.
   sim.add_synchronising_action("fluid_step", sim.time(), scene.gas.time_step,
                                [coupling, kick, refreshed, kicks](GlobalStep& step) {
-                                 coupling->step(step.time, step.particles, step.flights);
+                                 coupling->step(step.time, step.particles, step.flights, step.side);
                                  if (kick)
                                    kicks.check_stability(
                                        step.particles, step.flights,

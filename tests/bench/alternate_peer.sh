@@ -1,8 +1,9 @@
 #!/bin/bash
 # carom against another event-driven code, in alternating runs pinned to one core (the machine's
 # drift and noise hit both): the monodisperse elastic fluid at the same N and phi, both timed over
-# about 20 collisions per particle after the lattice start has melted.
-#   tests/bench/alternate_peer.sh CAROM_BENCH PEER_KIND PEER_BINARY PAIRS N PHI
+# about WINDOW collisions per particle (default 20) after the lattice start has melted. carom runs
+# on one thread (carom_bench's default), as the peer does.
+#   tests/bench/alternate_peer.sh CAROM_BENCH PEER_KIND PEER_BINARY PAIRS N PHI [WINDOW]
 # Prints each pair's collisions per CPU second, the ratio carom/peer and both codes' pressure and
 # collision rate per particle (a physics check), then the median, min and max ratio.
 #
@@ -18,11 +19,13 @@
 # It reads init.sph in the working directory, redraws Maxwell velocities (fixed seed) and runs to
 # simulated time maxtime, printing the collision count every unit of time. Window: an FCC start is
 # run for carom's equilibration (150 collisions per particle at phi >= 0.4, else 10); from its end
-# snapshot, a run of K whole time units (K ~ 20 / collision rate, so the count is printed at its
-# end) minus a run of 0 (loading, neighbour lists, output) gives the window's user+sys CPU time.
+# snapshot, a run of K whole time units (K ~ WINDOW / collision rate, so the count is printed at
+# its end) minus a run of 0 (loading, neighbour lists, output) gives the window's user+sys CPU
+# time. That difference of two runs is noisy when the window is short (at N = 32000 and the
+# default 20, about 0.4 s): a WINDOW of 200 makes each run several seconds.
 # Another peer: write prep_KIND (run once in $tmp) and rate_KIND (prints "rate pressure coll_rate").
 set -euo pipefail
-carom=$1; kind=$2; peer=$3; pairs=$4; n=$5; phi=$6
+carom=$1; kind=$2; peer=$3; pairs=$4; n=$5; phi=$6; window=${7:-20}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 TIMEFORMAT='%3U %3S'
 cpu() { { time taskset -c 1 "$@" >"$tmp/out" 2>/dev/null; } 2>&1 | awk '{print $1 + $2}'; }
@@ -33,20 +36,21 @@ prep_edmd() {  # FCC lattice (as EDMD's own fcc()), melted; K from the Enskog co
     split("0.25 0.25 0.25 0.75 0.75 0.25 0.75 0.25 0.75 0.25 0.75 0.75", o, " ")
     for (i = 0; i < k; i++) for (j = 0; j < k; j++) for (l = 0; l < k; l++) for (b = 0; b < 4; b++)
       printf "a %.12f %.12f %.12f 0.5\n", (i + o[3*b+1]) * s, (j + o[3*b+2]) * s, (l + o[3*b+3]) * s }' >"$tmp/init.sph"
-  read -r teq K < <(awk -v phi="$phi" 'BEGIN { g = (1 - phi / 2) / (1 - phi) ^ 3
+  read -r teq K < <(awk -v phi="$phi" -v window="$window" 'BEGIN { g = (1 - phi / 2) / (1 - phi) ^ 3
     rate = 24 * phi * g / sqrt(atan2(0, -1)); eq = phi >= 0.4 ? 150 : 10
-    k = int(20 / rate + 0.5); print int(eq / rate) + 1, (k < 1 ? 1 : k) }')
+    k = int(window / rate + 0.5); print int(eq / rate) + 1, (k < 1 ? 1 : k) }')
   (cd "$tmp" && taskset -c 1 "$peer" "$teq" >/dev/null && mv snapshot_end.sph init.sph)
 }
 rate_edmd() {
   local t0 t1; cd "$tmp"
   t0=$(cpu "$peer" 0); t1=$(cpu "$peer" "$K")
   awk -v t="$t1" -v t0="$t0" -v K="$K" '/^Simtime/ { gsub(",", ""); c = $4 } /^Measured pressure/ { p = $NF }
-    END { printf "%.0f %.4f %.4f\n", c / (t - t0), p, 2 * c / (NN * K) }' NN="$n" "$tmp/out"
+    END { if (c == "" || t <= t0) { print "no collision count or no time in the peer'"'"'s output" > "/dev/stderr"; exit 1 }
+          printf "%.0f %.4f %.4f\n", c / (t - t0), p, 2 * c / (NN * K) }' NN="$n" "$tmp/out"
   cd - >/dev/null
 }
 carom_rate() {
-  taskset -c 1 "$carom" --n "$n" --phi "$phi" 2>/dev/null | awk -F= '/^pressure=/ { p = $2 } /^collision_rate=/ { c = $2 }
+  taskset -c 1 "$carom" --n "$n" --phi "$phi" --measure "$window" 2>/dev/null | awk -F= '/^pressure=/ { p = $2 } /^collision_rate=/ { c = $2 }
     /collisions_per_cpu_second=/ { sub(/.*collisions_per_cpu_second=/, ""); r = $0 } END { print r, p, c }'
 }
 

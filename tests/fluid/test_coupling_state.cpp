@@ -1,6 +1,8 @@
 // The gas coupling's checkpoint (fluid/coupling_state.cpp): a coupling restored from save() into
-// a fresh one continues bit for bit through the named HDF5 layout; a checkpoint that does not fit the scene is refused with the dataset and
-// the shape it should have. Determinism is exact, so every comparison is of bits.
+// a fresh one continues bit for bit through the named HDF5 layout; a checkpoint that does not fit
+// the scene is refused with the dataset and the shape it should have. And a step whose per-particle
+// parts run in halves on a side thread gives the same bits as one thread. Determinism is exact, so
+// every comparison is of bits.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "core/hdf5.hpp"
+#include "core/side_thread.hpp"
 #include "fluid/coupling.hpp"
 
 namespace carom {
@@ -65,10 +68,10 @@ struct Bed {
 
 /// Fluid step n at t = n dt, then every particle flies its flight for dt (no collisions).
 void advance(GasCoupling& gas, ParticleStore& particles, std::vector<RelaxFlight>& flights,
-             int first, int steps) {
+             int first, int steps, SideThread* side = nullptr) {
   const double dt = gas.settings().time_step;
   for (int n = first; n < first + steps; ++n) {
-    gas.step(n * dt, particles, flights);
+    gas.step(n * dt, particles, flights, side);
     for (std::size_t i = 0; i < particles.size(); ++i) {
       particles.position[i] += flights[i].displacement(particles.velocity[i], dt);
       particles.velocity[i] = flights[i].velocity(particles.velocity[i], dt);
@@ -110,6 +113,34 @@ void expect_same_bits(const GasCoupling& a, const GasCoupling& b,
   }
   EXPECT_EQ(a.times().steps, b.times().steps);
   EXPECT_EQ(a.times().unconverged_steps, b.times().unconverged_steps);
+}
+
+// The spheres' cell shares, drag coefficients and flights of a step computed in two halves on
+// this and a side thread, their sums over particles taken in particle order: every output and
+// flight the same bits as one thread's, for 8 steps (with the longitudinal rates kept, which
+// call the closure twice per particle), and for an odd particle count (unequal halves).
+TEST(CouplingHalves, ASideThreadGivesTheSameStepsBitForBit) {
+  SideThread side;
+  for (const std::size_t count : {60u, 59u}) {
+    Bed one, two;
+    while (one.particles.size() > count) one.particles.pop_back();
+    two.particles = one.particles;
+    auto alone = one.coupling(), shared = two.coupling();
+    alone->keep_longitudinal_rates(true);
+    shared->keep_longitudinal_rates(true);
+    alone->prepare(one.particles);
+    shared->prepare(two.particles);
+    advance(*alone, one.particles, one.flights, 0, 8);
+    advance(*shared, two.particles, two.flights, 0, 8, &side);
+    expect_same_bits(*alone, *shared, one.flights, two.flights);
+    for (std::size_t i = 0; i < count; ++i) {
+      ASSERT_EQ(bits(alone->longitudinal_rates()[i]), bits(shared->longitudinal_rates()[i])) << i;
+      for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(bits(alone->gas_velocity_at_particles()[i][k]),
+                  bits(shared->gas_velocity_at_particles()[i][k]))
+            << i;
+    }
+  }
 }
 
 class CouplingCheckpoint : public ::testing::Test {

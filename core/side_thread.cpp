@@ -1,0 +1,100 @@
+#include "core/side_thread.hpp"
+
+#include <chrono>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace carom {
+
+namespace {
+/// Tells the core that this is a spin loop (spares the other hardware thread, if any).
+inline void relax_cpu() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#else
+  std::this_thread::yield();
+#endif
+}
+}  // namespace
+
+SideThread::SideThread() : thread_([this] { serve(); }) {}
+
+SideThread::~SideThread() {
+  state_.store(kStop, std::memory_order_seq_cst);
+  state_.notify_one();
+  thread_.join();
+}
+
+void SideThread::post(void (*task)(void*), void* argument) {
+  task_ = task;
+  argument_ = argument;
+  error_ = nullptr;
+  state_.store(kPosted, std::memory_order_seq_cst);
+  // Paired with serve's store of sleeping_ before it looks at the state a last time: either it
+  // sees kPosted there, or this sees it asleep and wakes it.
+  if (sleeping_.load(std::memory_order_seq_cst)) state_.notify_one();
+}
+
+bool SideThread::reclaim() {
+  int expected = kPosted;
+  return state_.compare_exchange_strong(expected, kIdle, std::memory_order_acq_rel);
+}
+
+std::exception_ptr SideThread::run_here() {
+  try {
+    task_(argument_);
+  } catch (...) {
+    return std::current_exception();
+  }
+  return nullptr;
+}
+
+std::exception_ptr SideThread::wait() {
+  // The side thread is running the task: at most a few microseconds, unless it was descheduled.
+  for (unsigned spins = 0; state_.load(std::memory_order_acquire) != kDone; ++spins) {
+    if (spins < 4096)
+      relax_cpu();
+    else
+      std::this_thread::yield();
+  }
+  std::exception_ptr error = error_;
+  state_.store(kIdle, std::memory_order_relaxed);
+  return error;
+}
+
+void SideThread::serve() {
+  using Clock = std::chrono::steady_clock;
+  // Tasks come every few microseconds while events are processed; a pause ten times longer
+  // than the longest gap between them (a fluid step, a snapshot) puts the thread to sleep.
+  constexpr auto kPatience = std::chrono::microseconds(200);
+  Clock::time_point idle_since = Clock::now();
+  for (unsigned spins = 0;;) {
+    int state = state_.load(std::memory_order_acquire);
+    if (state == kStop) return;
+    if (state == kPosted) {
+      if (state_.compare_exchange_strong(state, kRunning, std::memory_order_acquire)) {
+        try {
+          task_(argument_);
+        } catch (...) {
+          error_ = std::current_exception();
+        }
+        side_runs_.fetch_add(1, std::memory_order_relaxed);
+        state_.store(kDone, std::memory_order_release);
+      }
+      idle_since = Clock::now();
+      spins = 0;
+      continue;
+    }
+    relax_cpu();
+    if (++spins % 256 != 0 || Clock::now() - idle_since < kPatience) continue;
+    sleeping_.store(true, std::memory_order_seq_cst);
+    state = state_.load(std::memory_order_seq_cst);
+    if (state != kPosted && state != kStop) state_.wait(state, std::memory_order_seq_cst);
+    sleeping_.store(false, std::memory_order_relaxed);
+    idle_since = Clock::now();
+    spins = 0;
+  }
+}
+
+}  // namespace carom

@@ -20,9 +20,10 @@ void read_engine(TableReader& root, Scene& scene) {
     scene.method.event_driven.grid_level_ratio = e->number("grid_level_ratio", scene.method.event_driven.grid_level_ratio,
                                                Range{0.0, 1.0, false, true, "size ratio that starts a new grid level (0: one grid)"});
     scene.method.event_driven.check_invariants = e->boolean("check_invariants", scene.method.event_driven.check_invariants);
-    scene.method.event_driven.threads = static_cast<int>(
-        e->integer("threads", 0, 0, 1024,
-                   "threads of one run (0: CAROM_THREADS, else every hardware thread)"));
+    scene.method.event_driven.threads =
+        static_cast<int>(e->integer("threads", 0, 0, 1024,
+                                    "threads of one run (0: CAROM_THREADS, else the hardware "
+                                    "threads this process may run on)"));
     e->finish();
   }
 }

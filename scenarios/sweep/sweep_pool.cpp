@@ -13,7 +13,8 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <thread>
+
+#include "core/worker_pool.hpp"
 
 extern char** environ;
 
@@ -61,10 +62,10 @@ const volatile std::sig_atomic_t* sweep_stop_flag() {
 
 ProcessPool::ProcessPool(std::size_t slots)
     : slots_(slots < 1 ? 1 : slots), executable_(own_executable()) {
-  // Cases running side by side share the cores: each gets its part of the threads (a run's
-  // relax predictions use every hardware thread by default), unless the user chose.
+  // Cases running side by side share the cores: each gets its part of the threads (a relax
+  // run uses every core it may run on by default), unless the user chose.
   if (std::getenv("CAROM_THREADS") == nullptr) {
-    const std::size_t hardware = std::max<std::size_t>(1, std::thread::hardware_concurrency());
+    const auto hardware = static_cast<std::size_t>(WorkerPool::default_threads());
     const std::string per_case = std::to_string(std::max<std::size_t>(1, hardware / slots_));
     setenv("CAROM_THREADS", per_case.c_str(), 1);
   }

@@ -157,7 +157,7 @@ void GasCoupling::step(double t, const ParticleStore& particles, std::vector<Rel
   }
   const std::vector<double> gas_porosity = two_way ? porosity_ : std::vector<double>(cells, 1.0);
   const GasStepReport report =
-      solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity);
+      solver_->step(settings_.time_step, gas_porosity, beta, solid_velocity, side);
   if (!report.converged) ++times_.unconverged_steps;
   times_.solve += seconds_since(start);
 

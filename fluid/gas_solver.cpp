@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/side_thread.hpp"
 #include "gas_workspace.hpp"
 
 namespace carom {
@@ -102,8 +103,10 @@ GasSolver::GasSolver(GasGrid grid, GasProperties gas, std::array<GasBoundary, 6>
     else
       work.multigrid.analyze(work.pressure, coordinates);
   }
-  work.momentum_solver.setTolerance(options_.linear_tolerance);
-  work.momentum_solver.setMaxIterations(kMaxLinearIterations);
+  for (auto& solver : work.momentum_solver) {
+    solver.setTolerance(options_.linear_tolerance);
+    solver.setMaxIterations(kMaxLinearIterations);
+  }
   work.residual.assign(cells, 0.0);
 
   // Initial pressure: hydrostatic from the first outlet (along its axis), else 0.
@@ -207,7 +210,8 @@ double GasSolver::continuity_imbalance(const StepInputs& in) {
 }
 
 GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
-                              std::span<const double> beta, std::span<const Vec3> solid_velocity) {
+                              std::span<const double> beta, std::span<const Vec3> solid_velocity,
+                              SideThread* side) {
   const StepInputs in{dt, porosity, beta, solid_velocity};
   check_inputs(in);
   const GasLayout& layout = *layout_;
@@ -232,8 +236,8 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
     // 1. Momentum predictor with the current pressure (convecting fluxes of the last iterate).
     compute_fluxes();
     work.iterate = velocity_;
-    for (int a = 0; a < 3; ++a) {
-      if (layout.unknown_face[a].empty()) continue;
+    auto predict_axis = [&](int a) {
+      if (layout.unknown_face[a].empty()) return;
       assemble_momentum(a);
       // Solve for the increment from the last iterate, so that the relative tolerance of the
       // linear solve applies to the change (which vanishes as SIMPLE converges).
@@ -241,10 +245,21 @@ GasStepReport GasSolver::step(double dt, std::span<const double> porosity,
       for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u)
         x[u] = velocity_[a][layout.unknown_face[a][u]];
       work.rhs[a] -= work.momentum[a] * x;
-      work.momentum_solver.compute(work.momentum[a]);
-      x += work.momentum_solver.solve(work.rhs[a]);
+      work.momentum_solver[a].compute(work.momentum[a]);
+      x += work.momentum_solver[a].solve(work.rhs[a]);
       for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u)
         velocity_[a][layout.unknown_face[a][u]] = x[u];
+    };
+    // Each axis reads its own velocities, the fluxes and the pressure, and writes its own
+    // matrix, solver and velocities: z may run on the side thread while x and y run here.
+    if (side != nullptr) {
+      side->run_beside([&] { predict_axis(2); },
+                       [&] {
+                         predict_axis(0);
+                         predict_axis(1);
+                       });
+    } else {
+      for (int a = 0; a < 3; ++a) predict_axis(a);
     }
     double speed = options_.velocity_floor, change = 0.0;
     for (int a = 0; a < 3; ++a)

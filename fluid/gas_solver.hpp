@@ -65,6 +65,8 @@
 
 namespace carom {
 
+class SideThread;  // core/side_thread.hpp
+
 namespace gas_detail {
 struct GasLayout;
 struct GasWorkspace;
@@ -177,8 +179,9 @@ class GasSolver {
   /// the previous step is the old one (the first step has d eps/dt = 0). Throws
   /// std::invalid_argument for bad inputs and std::runtime_error if the solution diverges
   /// (non-finite velocities). Not converging within max_iterations is reported, not thrown.
+  /// With a `side` thread the axes' momentum equations are solved at once (the same bits).
   GasStepReport step(double dt, std::span<const double> porosity, std::span<const double> beta,
-                     std::span<const Vec3> solid_velocity);
+                     std::span<const Vec3> solid_velocity, SideThread* side = nullptr);
 
   /// Sets a side's uniform inlet superficial velocity into the domain, m/s (used where the side
   /// has no jet profile). Throws std::invalid_argument if the side is no inlet.

@@ -36,7 +36,9 @@ struct GasWorkspace {
   bool use_direct = true;
   Eigen::SimplicialLDLT<SparseMatrix> direct;
   PressureMultigrid multigrid;
-  Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> momentum_solver;
+  /// One per axis: the axes' momentum equations may be solved at once (GasSolver::step).
+  std::array<Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>>, 3>
+      momentum_solver;
 };
 
 }  // namespace carom::gas_detail

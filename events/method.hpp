@@ -18,10 +18,8 @@
 #include "events/statistics.hpp"
 
 namespace carom {
-class SideThread;  // core/side_thread.hpp
-}
 
-namespace carom {
+class SideThread;  // core/side_thread.hpp
 
 /// Kinetic, potential, elastic and dissipated energy at the current time, J.
 struct Energies {

@@ -304,7 +304,7 @@ double EventDrivenEngine::next_synchronisation() const {
 SideThread* EventDrivenEngine::side_thread() {
   // Only relax predictions (exponentials, a root search: several microseconds each) are worth
   // handing over; a ballistic one (a quadratic per candidate) costs less than the hand-over
-  // and the cache lines it moves (with it: 0.65 of the speed at N = 32000 and 0.7 at 1e6,
+  // and the cache lines it moves (slower with it at N = 32000 and at 1e6: "The side thread" in
   // tests/bench/README.md). Below a few hundred particles other work takes most of an event.
   constexpr std::size_t kShared = 256;
   if (flight_kind_ != Flights::Relax || hot_.size() < kShared || threads_ == 1) return nullptr;

@@ -166,8 +166,9 @@ class EventDrivenEngine final : public CollisionMethod {
   /// The worker threads for a loop over every particle, or null to run it on this thread
   /// (one thread asked for, or too few particles to be worth waking the workers).
   WorkerPool* shared_workers();
-  /// The thread on which one of a collision's two predictions is made, or null (one thread
-  /// asked for, or too few particles: see side_thread's definition).
+  /// The second thread of a relax run (a collision's two predictions, the predictions after a
+  /// fluid step and the gas step's parts, each shared with it), or null (other flights, one
+  /// thread asked for, or too few particles: see side_thread's definition).
   SideThread* side_thread();
   /// Predicts all of particle i's events for the flights of this run.
   void predict_any(std::int32_t i);

@@ -16,6 +16,15 @@ inline void relax_cpu() {
   std::this_thread::yield();
 #endif
 }
+/// Runs task(argument); returns its exception, if any (either thread runs tasks this way).
+std::exception_ptr run_catching(void (*task)(void*), void* argument) {
+  try {
+    task(argument);
+  } catch (...) {
+    return std::current_exception();
+  }
+  return nullptr;
+}
 }  // namespace
 
 SideThread::SideThread() : thread_([this] { serve(); }) {}
@@ -42,12 +51,7 @@ bool SideThread::reclaim() {
 }
 
 std::exception_ptr SideThread::run_here() {
-  try {
-    task_(argument_);
-  } catch (...) {
-    return std::current_exception();
-  }
-  return nullptr;
+  return run_catching(task_, argument_);
 }
 
 std::exception_ptr SideThread::wait() {
@@ -74,11 +78,7 @@ void SideThread::serve() {
     if (state == kStop) return;
     if (state == kPosted) {
       if (state_.compare_exchange_strong(state, kRunning, std::memory_order_acquire)) {
-        try {
-          task_(argument_);
-        } catch (...) {
-          error_ = std::current_exception();
-        }
+        error_ = run_catching(task_, argument_);
         side_runs_.fetch_add(1, std::memory_order_relaxed);
         state_.store(kDone, std::memory_order_release);
       }

@@ -21,11 +21,15 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
   const double horizon = end - t_ref;
   if (!(horizon > 0.0)) return kNever;
   const double contact = a.radius + b.radius;
-  // Cheapest exact rejection, before either state is advanced (which costs exponentials): a
-  // particle flying from its clock to `end` stays within |v0| s + |a0| s^2 / 2 of where it
-  // was (its acceleration only decays, see relax_flight.hpp). Two such balls that do not
-  // reach each other cannot touch. In a dense bed this ends most candidates.
-  {
+  // Two exact rejections, and the contact search only when neither ends the candidate (in
+  // either order: the search runs for the same candidates, so every event is the same).
+  //
+  // The sweep test: a particle flying from its clock to `end` stays within
+  // |v0| s + |a0| s^2 / 2 of where it was (its acceleration only decays, see relax_flight.hpp).
+  // Two such balls that do not reach each other cannot touch. Before either state is advanced
+  // (which costs exponentials), this is the cheapest test, and in a dense bed it ends most
+  // candidates.
+  auto out_of_sweep = [&] {
     const double span_a = end - a.clock, span_b = end - b.clock;
     const double sweep =
         span_a * (a.velocity.norm() + 0.5 * span_a * fa.acceleration(a.velocity).norm()) +
@@ -33,8 +37,14 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
     Vec3 gap = a.position - b.position;
     system_.domain.minimum_image(gap);
     const double reach = contact + sweep;
-    if (gap.squaredNorm() > reach * reach) return kNever;
-  }
+    return gap.squaredNorm() > reach * reach;
+  };
+  // States on the same clock (every prediction right after a fluid step: two thirds of a
+  // bubbling bed's) need no advancing, and then the line test below goes first: it ends far
+  // more (counted on the bubbling bed to 0.3 s: of 17.8 million candidates the reach test let
+  // through, the sweep test ended 16 %, the line test 79 % of the rest).
+  const bool same_clock = a.clock == b.clock;
+  if (!same_clock && out_of_sweep()) return kNever;
   const double dt_a = t_ref - a.clock, dt_b = t_ref - b.clock;
   Vec3 dr = a.position - b.position;
   Vec3 va = a.velocity, vb = b.velocity;
@@ -47,8 +57,8 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
     vb = fb.velocity(b.velocity, dt_b);
   }
   system_.domain.minimum_image(dr);
-  // Cheap exact rejection first: each acceleration only decays (a(s) = a(0) e^{-rate s}), so the
-  // relative path strays from the straight line dr + u s by at most A s^2 / 2 with
+  // The line test: each acceleration only decays (a(s) = a(0) e^{-rate s}), so the relative
+  // path strays from the straight line dr + u s by at most A s^2 / 2 with
   // A = |a_a(0)| + |a_b(0)|. If that line keeps farther than contact + A H^2 / 2 from the origin
   // over [0, H], the spheres cannot touch. Most candidates end here, with no exponential.
   const Vec3 u = va - vb;
@@ -57,6 +67,7 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
   const double u2 = u.squaredNorm();
   const double closest = u2 > 0.0 ? std::clamp(-dr.dot(u) / u2, 0.0, horizon) : 0.0;
   if ((dr + closest * u).squaredNorm() > reach * reach) return kNever;
+  if (same_clock && out_of_sweep()) return kNever;
   const double s = relax_pair_contact_time(dr, va, fa, vb, fb, contact, horizon);
   return s == kNever ? kNever : t_ref + s;
 }

@@ -87,4 +87,28 @@ void for_halves(SideThread* side, std::size_t n, Body&& body) {
   side->run_beside([&] { body(n / 2, n, 1); }, [&] { body(std::size_t{0}, n / 2, 0); });
 }
 
+/// Calls body(begin, end) for consecutive pieces of [0, n) of at most `chunk` indices each, which
+/// the calling thread and `side` take in turn from a shared counter as each finishes its last,
+/// so that neither waits long for the other when some indices cost more than others (halves
+/// fixed in advance left a thread idle for up to the difference). Every index is handed out
+/// exactly once, to one thread or the other; all here when `side` is null. The body must
+/// write only what belongs to its own indices (which thread runs an index depends on timing).
+template <class Body>
+void for_chunks(SideThread* side, std::size_t n, std::size_t chunk, Body&& body) {
+  if (side == nullptr) {
+    for (std::size_t begin = 0; begin < n; begin += chunk)
+      body(begin, begin + chunk < n ? begin + chunk : n);
+    return;
+  }
+  alignas(64) std::atomic<std::size_t> next{0};
+  auto take = [&] {
+    for (;;) {
+      const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
+      if (begin >= n) return;
+      body(begin, begin + chunk < n ? begin + chunk : n);
+    }
+  };
+  side->run_beside(take, take);
+}
+
 }  // namespace carom

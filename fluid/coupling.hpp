@@ -58,9 +58,10 @@ class GasCoupling {
   /// Maps the particles (porosity) without advancing the gas: the state at t = 0 for outputs.
   void prepare(const ParticleStore& particles);
   /// The fluid step at time t: particles as of t; sets flights[i] for [t, t + dt).
-  /// Its per-particle parts (the spheres' cell shares, drag coefficients, interpolation) run in
-  /// two halves on this and the `side` thread when one is given; every sum over particles is
-  /// taken in particle order afterwards, so the results are the same bit for bit.
+  /// Its per-particle parts (the spheres' cell shares in two halves; drag coefficients and
+  /// interpolation in pieces taken in turn) run on this and the `side` thread when one is given;
+  /// every sum over particles is taken in particle order afterwards, so the results are the same
+  /// bit for bit.
   void step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights,
             SideThread* side = nullptr);
 
@@ -146,7 +147,7 @@ class GasCoupling {
   // Per particle, as of the last mapping.
   std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
   std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).
-  // Per-particle scratch of a step, filled in two halves (see step).
+  // Per-particle scratch of a step, filled on two threads (see step).
   std::array<std::vector<CellShare>, 2> half_shares_;  ///< Each half's cell shares in order.
   std::vector<std::uint32_t> share_count_;             ///< Cell shares per particle.
   std::vector<double> particle_drag_;                  ///< K_i, kg/s.

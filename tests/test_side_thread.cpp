@@ -2,6 +2,8 @@
 // when it returns, whichever thread ran the side task; an exception of either reaches the
 // caller (the caller's own first) and the thread stays usable; a thread that fell asleep
 // wakes for the next task; and the side thread does take tasks while the caller is busy.
+// for_chunks hands every index out exactly once, in pieces of at most the chunk, with or
+// without a side thread.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -72,6 +74,33 @@ TEST(SideThread, TakesTasksWhileTheCallerIsBusy) {
   // 0.2 s of tasks: the side thread is scheduled in that time even on a loaded machine.
   for (int k = 0; k < 10000; ++k) side.run_beside([] {}, busy);
   EXPECT_GT(side.side_runs(), 0u);
+}
+
+// Plain per-index writes (each index belongs to one piece): every index of [0, n) is visited
+// exactly once and no piece is longer than the chunk or empty, for sizes around the chunk and a
+// size whose pieces the two threads share (uneven work: odd pieces spin a little).
+TEST(SideThread, ChunksHandEachIndexOutOnce) {
+  SideThread side;
+  for (SideThread* thread : {&side, static_cast<SideThread*>(nullptr)})
+    for (std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{31}, std::size_t{32},
+                          std::size_t{33}, std::size_t{10007}}) {
+      std::vector<int> visits(n, 0);
+      std::vector<int> bad_piece(n + 1, 0);
+      for_chunks(thread, n, 32, [&](std::size_t begin, std::size_t end) {
+        if (end <= begin || end - begin > 32 || end > n) bad_piece[begin] = 1;
+        for (std::size_t i = begin; i < end; ++i) {
+          ++visits[i];
+          if ((begin / 32) % 2 == 1) {
+            const auto until = std::chrono::steady_clock::now() + std::chrono::nanoseconds(200);
+            while (std::chrono::steady_clock::now() < until) {
+            }
+          }
+        }
+      });
+      for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(visits[i], 1) << "n " << n << " index " << i;
+      for (std::size_t i = 0; i <= n; ++i)
+        ASSERT_EQ(bad_piece[i], 0) << "n " << n << " piece at " << i;
+    }
 }
 
 }  // namespace

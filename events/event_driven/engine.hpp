@@ -242,7 +242,7 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Reads the records, the grid and the counters only: safe to call for many particles at once.
   Event relax_collision(std::int32_t i, double limit) const;
   /// After a synchronising action: every particle's events predicted again (relax flights:
-  /// planned in two halves on this and the side thread, or in chunks on the worker threads
+  /// planned in pieces taken in turn by this and the side thread, or on the worker threads
   /// from 3 threads on, scheduled in particle order; else one by one).
   template <class Flight>
   void predict_all();

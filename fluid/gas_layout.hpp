@@ -23,9 +23,15 @@ inline constexpr double kClosedFraction = 1e-12;
 inline constexpr const char* kSideNames[6] = {"x_low",  "x_high", "y_low",
                                               "y_high", "z_low",  "z_high"};
 
-/// Throws std::invalid_argument("gas solver: " + message) unless `condition`.
+/// Throws std::invalid_argument("gas solver: " + message).
+[[noreturn]] inline void fail(const std::string& message) {
+  throw std::invalid_argument("gas solver: " + message);
+}
+
+/// Throws std::invalid_argument("gas solver: " + message) unless `condition`. The message is
+/// built before the call: checks made every fluid step use `if (!condition) fail(...)`.
 inline void require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument("gas solver: " + message);
+  if (!condition) fail(message);
 }
 
 /// Number of face cells on a side normal to `axis` (the product of the two other cell counts).

@@ -11,6 +11,7 @@
 namespace carom {
 
 using gas_detail::direction;
+using gas_detail::fail;
 using gas_detail::GasLayout;
 using gas_detail::kSideNames;
 using gas_detail::require;
@@ -127,23 +128,24 @@ GasSolver::GasSolver(GasSolver&&) noexcept = default;
 GasSolver& GasSolver::operator=(GasSolver&&) noexcept = default;
 
 void GasSolver::check_inputs(const StepInputs& in) const {
+  // Called every fluid step: each message is built only when its check fails.
   const auto cells = static_cast<std::size_t>(grid_.count());
-  require(std::isfinite(in.dt) && in.dt > 0.0,
-          "time step " + std::to_string(in.dt) + " s must be positive");
-  require(
-      in.porosity.size() == cells && in.beta.size() == cells && in.solid_velocity.size() == cells,
-      "porosity, beta and solid velocity need one value per cell (" + std::to_string(cells) +
-          "); got " + std::to_string(in.porosity.size()) + ", " + std::to_string(in.beta.size()) +
-          ", " + std::to_string(in.solid_velocity.size()));
+  if (!(std::isfinite(in.dt) && in.dt > 0.0))
+    fail("time step " + std::to_string(in.dt) + " s must be positive");
+  if (in.porosity.size() != cells || in.beta.size() != cells || in.solid_velocity.size() != cells)
+    fail("porosity, beta and solid velocity need one value per cell (" + std::to_string(cells) +
+         "); got " + std::to_string(in.porosity.size()) + ", " + std::to_string(in.beta.size()) +
+         ", " + std::to_string(in.solid_velocity.size()));
   for (std::size_t c = 0; c < cells; ++c) {
-    require(in.porosity[c] > 0.0 && in.porosity[c] <= 1.0,
-            "porosity " + std::to_string(in.porosity[c]) + " of cell " + std::to_string(c) +
-                " is outside (0, 1] (or NaN); floor it (gas.min_porosity) before the solver");
-    require(std::isfinite(in.beta[c]) && in.beta[c] >= 0.0,
-            "drag coefficient beta " + std::to_string(in.beta[c]) + " kg/m^3/s of cell " +
-                std::to_string(c) + " must be finite and >= 0");
-    require(in.solid_velocity[c].allFinite(),
-            "solid velocity of cell " + std::to_string(c) + " is not finite");
+    if (!(in.porosity[c] > 0.0 && in.porosity[c] <= 1.0))
+      fail("porosity " + std::to_string(in.porosity[c]) + " of cell " + std::to_string(c) +
+           " is outside (0, 1] (or NaN); floor it (gas.min_porosity) before the "
+           "solver");
+    if (!(std::isfinite(in.beta[c]) && in.beta[c] >= 0.0))
+      fail("drag coefficient beta " + std::to_string(in.beta[c]) + " kg/m^3/s of cell " +
+           std::to_string(c) + " must be finite and >= 0");
+    if (!in.solid_velocity[c].allFinite())
+      fail("solid velocity of cell " + std::to_string(c) + " is not finite");
   }
 }
 

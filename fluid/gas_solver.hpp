@@ -240,6 +240,8 @@ class GasSolver {
   };
 
   void check_inputs(const StepInputs& in) const;
+  /// Throws unless `side` (0..5) is an inlet.
+  void check_inlet_side(int side) const;
   void set_fixed_faces(const StepInputs& in);
   void compute_fluxes();
   void prepare_momentum(int axis, const StepInputs& in);

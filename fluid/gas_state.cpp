@@ -10,6 +10,7 @@
 
 namespace carom {
 
+using gas_detail::fail;
 using gas_detail::GasLayout;
 using gas_detail::kSideNames;
 using gas_detail::require;
@@ -18,27 +19,30 @@ std::array<int, 3> GasSolver::face_counts(int axis) const {
   return layout_->face_dims[axis];
 }
 
+// Both setters run every fluid step (the inlet's ramp and jets): messages only on failure.
 void GasSolver::set_inlet_velocity(int side, double superficial_velocity) {
-  require(side >= 0 && side < 6, "side index " + std::to_string(side) + " is not in 0..5");
-  require(boundaries_[side].kind == GasBoundaryKind::Inlet,
-          std::string("side ") + kSideNames[side] + " is no inlet");
-  require(std::isfinite(superficial_velocity),
-          std::string("inlet velocity on ") + kSideNames[side] + " is not finite");
+  check_inlet_side(side);
+  if (!std::isfinite(superficial_velocity))
+    fail(std::string("inlet velocity on ") + kSideNames[side] + " is not finite");
   boundaries_[side].superficial_velocity = superficial_velocity;
 }
 
 void GasSolver::set_inlet_profile(int side, std::vector<double> profile) {
-  require(side >= 0 && side < 6, "side index " + std::to_string(side) + " is not in 0..5");
-  require(boundaries_[side].kind == GasBoundaryKind::Inlet,
-          std::string("side ") + kSideNames[side] + " is no inlet");
+  check_inlet_side(side);
   const int expected = gas_detail::side_face_cells(grid_.cells(), side / 2);
-  require(profile.empty() || static_cast<int>(profile.size()) == expected,
-          std::string("the jet profile of ") + kSideNames[side] + " has " +
-              std::to_string(profile.size()) + " values; the side has " + std::to_string(expected) +
-              " face cells");
+  if (!profile.empty() && static_cast<int>(profile.size()) != expected)
+    fail(std::string("the jet profile of ") + kSideNames[side] + " has " +
+         std::to_string(profile.size()) + " values; the side has " + std::to_string(expected) +
+         " face cells");
   for (double v : profile)
-    require(std::isfinite(v), std::string("jet profile of ") + kSideNames[side] + " not finite");
+    if (!std::isfinite(v)) fail(std::string("jet profile of ") + kSideNames[side] + " not finite");
   boundaries_[side].jet_profile = std::move(profile);
+}
+
+void GasSolver::check_inlet_side(int side) const {
+  if (side < 0 || side >= 6) fail("side index " + std::to_string(side) + " is not in 0..5");
+  if (boundaries_[side].kind != GasBoundaryKind::Inlet)
+    fail(std::string("side ") + kSideNames[side] + " is no inlet");
 }
 
 void GasSolver::set_uniform_velocity(const Vec3& u) {

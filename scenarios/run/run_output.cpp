@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "carom/version.hpp"
@@ -111,6 +113,11 @@ struct RunFile::Impl {
   Eigen::Matrix3d previous_virial = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d previous_kinetic_stress = Eigen::Matrix3d::Zero();
   bool has_previous = false;
+
+  // The time series' datasets, opened once (a sample appends to some twenty of them); an empty
+  // entry is a column this file does not have (one written before the column existed).
+  std::map<std::string, std::optional<h5::Dataset>, std::less<>> columns;
+  const h5::Dataset* column(const std::string& name);
 
   void write_xdmf() const;
   void recover_previous_sample();
@@ -256,6 +263,17 @@ void RunFile::Impl::recover_previous_sample() {
 
 // A run resumed from a checkpoint older than its last outputs writes them again (bit for bit the
 // same, the run being deterministic): the rows and snapshots from then on are dropped first.
+const h5::Dataset* RunFile::Impl::column(const std::string& name) {
+  auto found = columns.find(name);
+  if (found == columns.end()) {
+    const h5::Group series = file.open_group("timeseries");
+    std::optional<h5::Dataset> set;
+    if (series.contains(name)) set = series.open_dataset(name);
+    found = columns.emplace(name, std::move(set)).first;
+  }
+  return found->second ? &*found->second : nullptr;
+}
+
 void RunFile::Impl::drop_samples_from(double time) {
   const h5::Group series = file.open_group("timeseries");
   const std::vector<double> times = series.read<double>("time");
@@ -344,10 +362,9 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
     return interval > 0.0 ? static_cast<double>(now - before) / interval : 0.0;
   };
 
-  const h5::Group series = d.file.open_group("timeseries");
   // A run file written before a column existed (resumed with a newer carom) goes on without it.
-  auto put = [&](const char* name, const auto& values) {
-    if (series.contains(name)) series.open_dataset(name).append(values);
+  auto put = [&](const std::string& name, const auto& values) {
+    if (const h5::Dataset* set = d.column(name)) set->append(values);
   };
   put("time", std::vector<double>{time});
   put("kinetic_translational", std::vector<double>{energy.translational});
@@ -388,13 +405,14 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
     put("gas_momentum_inflow", std::vector<double>{momentum_inflow});
   }
   for (const SeriesColumn& column : extra) {
-    if (!series.contains(column.name)) {
+    if (d.column(column.name) == nullptr) {
       // A series that starts late would not line up with time: only at the first row.
-      if (series.open_dataset("time").size() > 1)
+      if (d.column("time")->size() > 1)
         throw std::logic_error("run file: series " + column.name + " added after the first row");
-      series.create_extendible<double>(column.name, column.columns);
+      d.file.open_group("timeseries").create_extendible<double>(column.name, column.columns);
+      d.columns.erase(column.name);
     }
-    put(column.name.c_str(), column.values);
+    put(column.name, column.values);
   }
   d.file.flush();
 

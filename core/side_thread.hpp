@@ -3,7 +3,9 @@
 /// times a second (after a collision both partners' next events are predicted; each takes a
 /// few microseconds). Waking a sleeping thread costs more than such a task, so the thread
 /// spins while tasks keep coming and sleeps after a pause; handing one task over and back costs
-/// about 0.1 us on this machine's two cores.
+/// 0.1 to 0.6 us on this virtual machine's two cores (it varies from hour to hour with where the
+/// host puts them): whether that pays for tasks of a few microseconds is measured as the run
+/// goes (core/split_chooser.hpp).
 ///
 /// The caller never waits for the thread to begin: run_beside posts one task, runs the other
 /// itself, and then takes the first back and runs it too unless the thread has begun it. So a

@@ -31,7 +31,8 @@ SideThread::SideThread() : thread_([this] { serve(); }) {}
 
 SideThread::~SideThread() {
   state_.store(kStop, std::memory_order_seq_cst);
-  state_.notify_one();
+  wakes_.fetch_add(1, std::memory_order_seq_cst);
+  wakes_.notify_one();
   thread_.join();
 }
 
@@ -40,9 +41,17 @@ void SideThread::post(void (*task)(void*), void* argument) {
   argument_ = argument;
   error_ = nullptr;
   state_.store(kPosted, std::memory_order_seq_cst);
-  // Paired with serve's store of sleeping_ before it looks at the state a last time: either it
-  // sees kPosted there, or this sees it asleep and wakes it.
-  if (sleeping_.load(std::memory_order_seq_cst)) state_.notify_one();
+  wake();
+}
+
+void SideThread::wake() {
+  // Paired with serve's store of sleeping_ before it reads wakes_ and looks at the state a last
+  // time: either it sees the new state there, or this sees it asleep and raises wakes_ (after
+  // or before serve read it: its wait returns at once, or it saw the new state).
+  if (sleeping_.load(std::memory_order_seq_cst)) {
+    wakes_.fetch_add(1, std::memory_order_seq_cst);
+    wakes_.notify_one();
+  }
 }
 
 bool SideThread::reclaim() {
@@ -89,9 +98,11 @@ void SideThread::serve() {
     relax_cpu();
     if (++spins % 256 != 0 || Clock::now() - idle_since < kPatience) continue;
     sleeping_.store(true, std::memory_order_seq_cst);
+    const unsigned wakes = wakes_.load(std::memory_order_seq_cst);
     state = state_.load(std::memory_order_seq_cst);
-    if (state != kPosted && state != kStop) state_.wait(state, std::memory_order_seq_cst);
-    sleeping_.store(false, std::memory_order_relaxed);
+    if (state != kPosted && state != kStop) wakes_.wait(wakes, std::memory_order_seq_cst);
+    sleeping_.store(false, std::memory_order_seq_cst);
+    wake_ups_.fetch_add(1, std::memory_order_relaxed);
     idle_since = Clock::now();
     spins = 0;
   }

@@ -2,6 +2,7 @@
 // when it returns, whichever thread ran the side task; an exception of either reaches the
 // caller (the caller's own first) and the thread stays usable; a thread that fell asleep
 // wakes for the next task; and the side thread does take tasks while the caller is busy.
+// wake() ends its sleep without a task.
 // for_chunks hands every index out exactly once, in pieces of at most the chunk, with or
 // without a side thread.
 #include <gtest/gtest.h>
@@ -61,6 +62,35 @@ TEST(SideThread, WakesForATaskAfterFallingAsleep) {
     side.run_beside([&] { value = 7; }, [] {});
     EXPECT_EQ(value, 7);
   }
+}
+
+/// Waits up to 10 s for condition(); returns whether it came.
+template <class Condition>
+bool eventually(Condition condition) {
+  const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (!condition())
+    if (std::chrono::steady_clock::now() > limit)
+      return false;
+    else
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+  return true;
+}
+
+TEST(SideThread, WakeEndsItsSleepWithoutATask) {
+  SideThread side;
+  for (int round = 0; round < 5; ++round) {
+    ASSERT_TRUE(eventually([&] { return side.sleeping(); })) << "it sleeps after its patience";
+    const unsigned long long before = side.wake_ups(), runs = side.side_runs();
+    side.wake();
+    EXPECT_TRUE(eventually([&] { return side.wake_ups() > before; })) << "round " << round;
+    EXPECT_EQ(side.side_runs(), runs) << "waking runs nothing";
+    int value = 0;
+    side.run_beside([&] { value = 7; }, [] {});
+    EXPECT_EQ(value, 7);
+  }
+  // Awake, wake() does nothing (and the destructor ends a sleeping or spinning thread alike).
+  side.wake();
+  side.wake();
 }
 
 TEST(SideThread, TakesTasksWhileTheCallerIsBusy) {

@@ -327,6 +327,10 @@ void EventDrivenEngine::fire_action(std::size_t k) {
     calendar_.set(end_slot_ + 1 + k, action.next_time);
     return;
   }
+  // The step's loops share their work with the side thread, which has likely gone to sleep
+  // during the events: woken now, it is spinning by the first of them.
+  SideThread* side = side_thread();
+  if (side != nullptr) side->wake();
   ParticleStore& p = system_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) advance<Flight>(static_cast<std::int32_t>(i), time_);
   last_particle_event_ = time_;
@@ -335,7 +339,7 @@ void EventDrivenEngine::fire_action(std::size_t k) {
   // (and spin energy) it gives the particles is work done by the gas.
   const double kinetic_before = kinetic_energy(p);
   GlobalStep step{time_, p, flights_};
-  step.side = side_thread();
+  step.side = side;
   action.step(step);
   if (flights_.size() != p.size() || hot_.size() != p.size())
     throw std::logic_error(action.name + " changed the number of particles or flights");

@@ -305,7 +305,8 @@ SideThread* EventDrivenEngine::side_thread() {
   // Only relax predictions (exponentials, a root search: several microseconds each) are worth
   // handing over; a ballistic one (a quadratic per candidate) costs less than the hand-over
   // and the cache lines it moves (slower with it at N = 32000 and at 1e6: "The side thread" in
-  // tests/bench/README.md). Below a few hundred particles other work takes most of an event.
+  // tests/bench/README.md; with predict_pair's trials, 2026-12-04, no faster in the main job's
+  // settling). Below a few hundred particles other work takes most of an event.
   constexpr std::size_t kShared = 256;
   if (flight_kind_ != Flights::Relax || hot_.size() < kShared || threads_ == 1) return nullptr;
   if (!side_) side_ = std::make_shared<SideThread>();
@@ -320,6 +321,7 @@ template <class Flight>
 void EventDrivenEngine::fire_action(std::size_t k) {
   PeriodicAction& action = actions_[k];
   time_ = action.next_time;
+  pair_split_.interrupt();  // not a collision's work: left out of its timing
   if (!action.step) {
     store_state();
     action.action();
@@ -371,6 +373,7 @@ bool EventDrivenEngine::run_until(double t_end) {
 template <class Flight>
 bool EventDrivenEngine::run_events(double t_end) {
   calendar_.set(end_slot_, t_end);
+  pair_split_.interrupt();  // the caller's work since the last run (output) is not a collision's
   for (std::uint32_t countdown = 4096;; --countdown) {
     if (countdown == 0) {
       countdown = 4096;

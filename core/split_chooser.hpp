@@ -25,6 +25,7 @@ class SplitChooser {
   static constexpr std::uint32_t kBlock = 64;
   /// Blocks per trial: four each way.
   static constexpr std::uint32_t kTrialBlocks = 8;
+  /// Calls per trial.
   static constexpr std::uint32_t kTrialCalls = kTrialBlocks * kBlock;
   /// Calls between trials (a few tenths of a second of a dense bed's events).
   static constexpr std::uint32_t kKeptCalls = 32768;

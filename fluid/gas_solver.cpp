@@ -139,8 +139,7 @@ void GasSolver::check_inputs(const StepInputs& in) const {
   for (std::size_t c = 0; c < cells; ++c) {
     if (!(in.porosity[c] > 0.0 && in.porosity[c] <= 1.0))
       fail("porosity " + std::to_string(in.porosity[c]) + " of cell " + std::to_string(c) +
-           " is outside (0, 1] (or NaN); floor it (gas.min_porosity) before the "
-           "solver");
+           " is outside (0, 1] (or NaN); floor it (gas.min_porosity) before the solver");
     if (!(std::isfinite(in.beta[c]) && in.beta[c] >= 0.0))
       fail("drag coefficient beta " + std::to_string(in.beta[c]) + " kg/m^3/s of cell " +
            std::to_string(c) + " must be finite and >= 0");

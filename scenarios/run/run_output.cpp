@@ -261,8 +261,6 @@ void RunFile::Impl::recover_previous_sample() {
   has_previous = true;
 }
 
-// A run resumed from a checkpoint older than its last outputs writes them again (bit for bit the
-// same, the run being deterministic): the rows and snapshots from then on are dropped first.
 const h5::Dataset* RunFile::Impl::column(const std::string& name) {
   auto found = columns.find(name);
   if (found == columns.end()) {
@@ -274,6 +272,8 @@ const h5::Dataset* RunFile::Impl::column(const std::string& name) {
   return found->second ? &*found->second : nullptr;
 }
 
+// A run resumed from a checkpoint older than its last outputs writes them again (bit for bit the
+// same, the run being deterministic): the rows and snapshots from then on are dropped first.
 void RunFile::Impl::drop_samples_from(double time) {
   const h5::Group series = file.open_group("timeseries");
   const std::vector<double> times = series.read<double>("time");
@@ -407,7 +407,8 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
   for (const SeriesColumn& column : extra) {
     if (d.column(column.name) == nullptr) {
       // A series that starts late would not line up with time: only at the first row.
-      if (d.column("time")->size() > 1)
+      const h5::Dataset* times = d.column("time");
+      if (times != nullptr && times->size() > 1)
         throw std::logic_error("run file: series " + column.name + " added after the first row");
       d.file.open_group("timeseries").create_extendible<double>(column.name, column.columns);
       d.columns.erase(column.name);

@@ -26,16 +26,13 @@
 # Another peer: write prep_KIND (run once in $tmp) and rate_KIND (prints "rate pressure coll_rate").
 set -euo pipefail
 carom=$1; kind=$2; peer=$3; pairs=$4; n=$5; phi=$6; window=${7:-20}
+here="$(cd "$(dirname "$0")" && pwd)"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 TIMEFORMAT='%3U %3S'
 cpu() { { time taskset -c 1 "$@" >"$tmp/out" 2>/dev/null; } 2>&1 | awk '{print $1 + $2}'; }
 
 prep_edmd() {  # FCC lattice (as EDMD's own fcc()), melted; K from the Enskog collision rate
-  awk -v n="$n" -v phi="$phi" 'BEGIN { k = int((n / 4) ^ (1 / 3) + 0.5); n = 4 * k ^ 3
-    L = (n * atan2(0, -1) / (6 * phi)) ^ (1 / 3); s = L / k; printf "%d\n%.12f %.12f %.12f\n", n, L, L, L
-    split("0.25 0.25 0.25 0.75 0.75 0.25 0.75 0.25 0.75 0.25 0.75 0.75", o, " ")
-    for (i = 0; i < k; i++) for (j = 0; j < k; j++) for (l = 0; l < k; l++) for (b = 0; b < 4; b++)
-      printf "a %.12f %.12f %.12f 0.5\n", (i + o[3*b+1]) * s, (j + o[3*b+2]) * s, (l + o[3*b+3]) * s }' >"$tmp/init.sph"
+  "$here/edmd_fcc.sh" "$n" "$phi" >"$tmp/init.sph"
   read -r teq K < <(awk -v phi="$phi" -v window="$window" 'BEGIN { g = (1 - phi / 2) / (1 - phi) ^ 3
     rate = 24 * phi * g / sqrt(atan2(0, -1)); eq = phi >= 0.4 ? 150 : 10
     k = int(window / rate + 0.5); print int(eq / rate) + 1, (k < 1 ? 1 : k) }')

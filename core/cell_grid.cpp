@@ -228,7 +228,7 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
     levels_.push_back(std::move(grid));
   }
   const std::size_t n = radius.size();
-  next_.assign(n, -1);
+  next_.assign(n + 1, -1);
   prev_.assign(n, -1);
   place_.assign(n, Place{});
   for (std::size_t i = 0; i < n; ++i) {
@@ -273,22 +273,38 @@ void HierarchicalGrid::set_head(int level, const std::array<int, 3>& c, std::int
         grid.head[flat_index(level, {images[0][d], images[1][b], images[2][a]})] = first;
 }
 
+double HierarchicalGrid::list_length_seen(int level) const {
+  const Level& grid = levels_[level];
+  double particles = 0.0, squares = 0.0;
+  for (int z = 0; z < grid.cells[2]; ++z)
+    for (int y = 0; y < grid.cells[1]; ++y)
+      for (int x = 0; x < grid.cells[0]; ++x) {
+        double count = 0.0;
+        for (std::int32_t j = grid.head[flat_index(level, {x, y, z})]; j >= 0; j = next(j))
+          count += 1.0;
+        particles += count;
+        squares += count * count;
+      }
+  return particles > 0.0 ? squares / particles : 0.0;
+}
+
 void HierarchicalGrid::link(std::int32_t i) {
   const std::int32_t head =
       levels_[place_[i].level].head[flat_index(place_[i].level, place_[i].cell)];
   prev_[i] = -1;
-  next_[i] = head;
+  next_[i + 1] = head;
   if (head >= 0) prev_[head] = i;
   set_head(place_[i].level, place_[i].cell, i);
 }
 
 void HierarchicalGrid::unlink(std::int32_t i) {
+  const std::int32_t after = next_[i + 1];
   if (prev_[i] >= 0)
-    next_[prev_[i]] = next_[i];
+    next_[prev_[i] + 1] = after;
   else
-    set_head(place_[i].level, place_[i].cell, next_[i]);
-  if (next_[i] >= 0) prev_[next_[i]] = prev_[i];
-  next_[i] = prev_[i] = -1;
+    set_head(place_[i].level, place_[i].cell, after);
+  if (after >= 0) prev_[after] = prev_[i];
+  next_[i + 1] = prev_[i] = -1;
 }
 
 void HierarchicalGrid::insert(std::int32_t i, const Vec3& r) {

@@ -187,9 +187,14 @@ class HierarchicalGrid {
   /// writes them), -1 for an empty cell.
   const std::int32_t* head_array(int level) const { return levels_[level].head.data(); }
   /// The particle after j in its cell's list, or -1.
-  std::int32_t next(std::int32_t j) const { return next_[j]; }
-  /// The neighbour lists (index by particle).
-  const std::int32_t* next_array() const { return next_.data(); }
+  std::int32_t next(std::int32_t j) const { return next_[j + 1]; }
+  /// How many particles the cell of a particle of `level` holds, averaged over those particles
+  /// (the sum of the cells' counts squared over the sum of the counts; 0 on an empty level):
+  /// how long the lists are that a prediction on that level walks.
+  double list_length_seen(int level) const;
+  /// The neighbour lists: next[j] is next(j), for every particle j and for j = -1 (the end of
+  /// a list is its own successor, -1), so a walk can go past a list's end without a branch.
+  const std::int32_t* next_array() const { return next_.data() + 1; }
 
   /// Cell coordinates on `level` of a point (clamped into the grid).
   std::array<int, 3> cell_coordinates(int level, const Vec3& r) const;
@@ -247,7 +252,11 @@ class HierarchicalGrid {
   Domain domain_;
   std::vector<Level> levels_;
   std::vector<double> level_diameter_;  ///< Nominal (largest) diameter of each level, m.
-  std::vector<std::int32_t> next_, prev_;
+  /// The particle after j in its cell's list is next_[j + 1] (-1 at the end); next_[0] = -1
+  /// stands for the end's own successor, so that a walk may read one past the end without a
+  /// branch (next_array).
+  std::vector<std::int32_t> next_;
+  std::vector<std::int32_t> prev_;
   /// Where a particle is: its level and its cell there. Read together at every prediction,
   /// so kept together (one cache miss, not two).
   struct Place {
@@ -280,7 +289,7 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
         const int y = range[1].at(b);
         for (int d = 0; d < range[0].count; ++d) {
           for (std::int32_t j = grid.head[flat_index(level, {range[0].at(d), y, z})]; j >= 0;
-               j = next_[j])
+               j = next_[j + 1])
             if (j != i) visit(j);
         }
       }

@@ -361,6 +361,10 @@ class EventDrivenEngine final : public CollisionMethod {
   std::vector<RelaxFlight> flights_;           ///< Relax: each particle's flight.
   /// Relax: bounds on every flight in flights_ (set by bound_flights whenever they change).
   RelaxFlightBounds flight_bounds_;
+  /// Relax: the levels (bit l for level l) whose cells hold several particles each where the
+  /// particles are (HierarchicalGrid::list_length_seen above kLongLists), measured at each
+  /// fluid step: their predictions walk deeper into each list without a branch.
+  std::uint32_t long_lists_ = 0;
   /// Work done on the particles by the gas since the start, J: by the gas forces of relax
   /// flights up to each particle's clock, and by the synchronising actions (drag kicks).
   double gas_work_ = 0;

@@ -92,15 +92,19 @@ struct PairBatch {
 };
 
 /// Hands the particles of the given cells but `self` (flat indices into `head`; lists linked by
-/// `next`), in the cells' order, to `batch` as records of `records`, and calls test(found)
-/// whenever it is full and once for the rest (if any); test reads batch.state[0, found). The
-/// walk is the inner loop of every prediction: the cells' first particles are loaded before
-/// any list is walked (independent loads, and no branch per cell: about half are empty), and a
-/// cell's first two particles are taken without a branch on the list's length (0, 1 or 2 more
-/// in a dense fluid, so a loop's exit mispredicted about once per cell); the rare third and
-/// later ones in a loop. A particle is written in any case and counted only when it is a
-/// candidate (not self, not a missing second), so the next write replaces it.
-template <class Test>
+/// `next`, where next[-1] = -1), in the cells' order, to `batch` as records of `records`, and
+/// calls test(found) whenever it is full and once for the rest (if any); test reads
+/// batch.state[0, found). The walk is the inner loop of every prediction: the cells' first
+/// particles are loaded before any list is walked (independent loads, and no branch per cell:
+/// about half are empty), and a list's first kUnrolled places are taken without a branch on its
+/// length (a place past the end reads next[-1] and is written but not counted), so that a loop's
+/// exit, mispredicted about once per cell, is reached only by longer lists. Two places suit a
+/// dense fluid (0, 1 or 2 particles a cell: deeper costs 6 % at phi = 0.40), four the lists of
+/// 3-5 that fines among large spheres make (tests/bench/README.md, "The candidate walk"). A
+/// particle is written in any case and counted only when it is a candidate (not self, not past
+/// the end), so the next write replaces it. Any depth hands over the same candidates in the same
+/// order.
+template <int kUnrolled, class Test>
 [[gnu::always_inline]] inline void gather_candidates(std::int32_t self, const std::int32_t* head,
                                                      const std::int32_t* next,
                                                      const std::int32_t* cells, int count,
@@ -115,19 +119,20 @@ template <class Test>
   }
   int found = 0;
   for (int c = 0; c < occupied; ++c) {
-    if (found > PairBatch::kCapacity - 2) {
+    if (found > PairBatch::kCapacity - kUnrolled) {
       test(found);
       found = 0;
     }
-    const std::int32_t j1 = first[c];
-    batch.state[found] = records + j1;
-    found += j1 != self;
-    const std::int32_t j2 = next[j1];
-    const bool second = j2 >= 0;
-    const std::int32_t k = second ? j2 : j1;
-    batch.state[found] = records + k;
-    found += second & (j2 != self);
-    for (std::int32_t j = second ? next[k] : -1; j >= 0; j = next[j]) {
+    std::int32_t j = first[c];
+    // The list's first kUnrolled places: each written (self for a place past the end) and
+    // counted when it holds a candidate; next[-1] = -1 keeps the walk going past the end.
+    for (int k = 0; k < kUnrolled; ++k) {
+      const bool present = j >= 0;
+      batch.state[found] = records + (present ? j : self);
+      found += present & (j != self);
+      j = next[j];
+    }
+    for (; j >= 0; j = next[j]) {
       if (found == PairBatch::kCapacity) {
         test(found);
         found = 0;

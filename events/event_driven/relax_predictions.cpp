@@ -10,6 +10,15 @@
 
 namespace carom {
 
+namespace {
+/// List places a prediction takes without a branch (gather_candidates): two where a cell holds
+/// about one particle, four where lists are long (fines among large spheres in a 1 mm cell), and
+/// the list length seen (HierarchicalGrid::list_length_seen) from which the deeper walk pays.
+constexpr int kShortListWalk = 2;
+constexpr int kLongListWalk = 4;
+constexpr double kLongLists = 2.5;
+}  // namespace
+
 double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double limit) const {
   const HotState& a = hot_[i];
   const HotState& b = hot_[j];
@@ -154,7 +163,7 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
   const std::int32_t* next = grid_.next_array();
   const HotState* hot = hot_.data();
   PairBatch batch;
-  gather_candidates(i, head, next, cells, count, hot, batch, [&](int found) {
+  auto test = [&](int found) {
     batch.pad_to_vectors(found, &a);  // the padding's answers are not read
 #ifndef NDEBUG
     for (int k = 0; k < found; ++k)
@@ -165,7 +174,12 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
     reached &= found == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << found) - 1;
     for (; reached != 0; reached &= reached - 1)  // in the cells' order
       consider(static_cast<std::int32_t>(batch.state[std::countr_zero(reached)] - hot), wrapped);
-  });
+  };
+  // The same candidates in the same order either way (see gather_candidates).
+  if (long_lists_ >> grid_.level_of(i) & 1u)
+    gather_candidates<kLongListWalk>(i, head, next, cells, count, hot, batch, test);
+  else
+    gather_candidates<kShortListWalk>(i, head, next, cells, count, hot, batch, test);
   if (grid_.levels().size() > 1)  // their pieces may wrap: always the nearest image
     grid_.for_each_candidate_on_other_levels(i, a.radius, [&](std::int32_t j) {
       if (j != i) consider(j, true);
@@ -203,6 +217,9 @@ constexpr std::size_t kPlanChunk = 32;
 template <>
 void EventDrivenEngine::predict_all<RelaxFlights>() {
   const std::size_t n = hot_.size();
+  long_lists_ = 0;
+  for (int l = 0; l < static_cast<int>(grid_.levels().size()) && l < 32; ++l)
+    if (grid_.list_length_seen(l) > kLongLists) long_lists_ |= 1u << l;
   // Each particle's agenda is its own cache line (Agenda is aligned to 64 bytes), and the
   // plans read only what no plan writes: any split gives the same agendas.
   auto plan_range = [this](std::size_t begin, std::size_t end, int = 0) {

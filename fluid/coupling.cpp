@@ -176,7 +176,7 @@ void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side
   // Each sphere's cell shares (the geometry: most of the cost) in two halves, in order...
   share_count_.resize(n);
   for_halves(side, n, [&](std::size_t begin, std::size_t end, int part) {
-    std::vector<CellShare>& shares = half_shares_[part];
+    std::vector<CellShare>& shares = half_shares_[part].shares;
     shares.clear();
     for (std::size_t i = begin; i < end; ++i) {
       const std::size_t before = shares.size();
@@ -188,9 +188,9 @@ void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side
   weight_start_.assign(n + 1, 0);
   weights_.clear();
   std::vector<double> solid(cells, 0.0), d3(cells, 0.0), d2(cells, 0.0);
-  const CellShare* share = half_shares_[0].data();
+  const CellShare* share = half_shares_[0].shares.data();
   for (std::size_t i = 0; i < n; ++i) {
-    if (i == n / 2) share = half_shares_[1].data();
+    if (i == n / 2) share = half_shares_[1].shares.data();
     weight_start_[i] = weights_.size();
     const double a = particles.radius[i];
     const double volume = 4.0 / 3.0 * std::numbers::pi * a * a * a;

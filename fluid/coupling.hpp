@@ -148,7 +148,13 @@ class GasCoupling {
   std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
   std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).
   // Per-particle scratch of a step, filled on two threads (see step).
-  std::array<std::vector<CellShare>, 2> half_shares_;  ///< Each half's cell shares in order.
+  /// One half's cell shares in order, on a cache line of its own: the two threads append to
+  /// theirs at once, and each append writes the vector's end (on one line, the two threads'
+  /// appends moved it between the cores at every sphere).
+  struct alignas(64) HalfShares {
+    std::vector<CellShare> shares;
+  };
+  std::array<HalfShares, 2> half_shares_;
   std::vector<std::uint32_t> share_count_;             ///< Cell shares per particle.
   std::vector<double> particle_drag_;                  ///< K_i, kg/s.
   std::vector<double> particle_porosity_;              ///< eps_i interpolated.

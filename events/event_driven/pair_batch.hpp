@@ -123,14 +123,26 @@ template <int kUnrolled, class Test>
       test(found);
       found = 0;
     }
-    std::int32_t j = first[c];
-    // The list's first kUnrolled places: each written (self for a place past the end) and
-    // counted when it holds a candidate; next[-1] = -1 keeps the walk going past the end.
-    for (int k = 0; k < kUnrolled; ++k) {
-      const bool present = j >= 0;
-      batch.state[found] = records + (present ? j : self);
-      found += present & (j != self);
-      j = next[j];
+    const std::int32_t j1 = first[c];  // never past the end
+    batch.state[found] = records + j1;
+    found += j1 != self;
+    std::int32_t j = next[j1];
+    if constexpr (kUnrolled == 2) {
+      // The second place, and the loop entered only from a present second (this form measured
+      // fewer instructions for the dense fluid than the general one below).
+      const bool second = j >= 0;
+      batch.state[found] = records + (second ? j : j1);
+      found += second & (j != self);
+      j = second ? next[j] : -1;
+    } else {
+      // Places 2..kUnrolled: each written (self for a place past the end) and counted when it
+      // holds a candidate; next[-1] = -1 keeps the walk going past the end.
+      for (int k = 1; k < kUnrolled; ++k) {
+        const bool present = j >= 0;
+        batch.state[found] = records + (present ? j : self);
+        found += present & (j != self);
+        j = next[j];
+      }
     }
     for (; j >= 0; j = next[j]) {
       if (found == PairBatch::kCapacity) {

@@ -289,7 +289,7 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
         const int y = range[1].at(b);
         for (int d = 0; d < range[0].count; ++d) {
           for (std::int32_t j = grid.head[flat_index(level, {range[0].at(d), y, z})]; j >= 0;
-               j = next_[j + 1])
+               j = next(j))
             if (j != i) visit(j);
         }
       }

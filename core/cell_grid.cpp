@@ -211,6 +211,7 @@ HierarchicalGrid::HierarchicalGrid(const Domain& domain, const std::vector<doubl
                                   std::to_string(total) + " cells; the domain is too large");
     for (int k = 0; k < 3; ++k) grid.padded[k] = grid.cells[k] + 2 * m;
     grid.head.assign(std::size_t(grid.padded[0]) * grid.padded[1] * grid.padded[2], -1);
+    grid.cell_bound.assign(grid.head.size(), 0.0);
     const auto offset = [&](int dx, int dy, int dz) {
       return dx + grid.padded[0] * (dy + grid.padded[1] * dz);
     };
@@ -254,8 +255,9 @@ std::array<int, 3> HierarchicalGrid::cell_coordinates(int level, const Vec3& r) 
   return c;
 }
 
-void HierarchicalGrid::set_head(int level, const std::array<int, 3>& c, std::int32_t first) {
-  Level& grid = levels_[level];
+template <class Visit>
+void HierarchicalGrid::for_each_image(int level, const std::array<int, 3>& c, Visit&& visit) const {
+  const Level& grid = levels_[level];
   const int m = grid.reach;
   // Per axis, the coordinates that stand for c[k]: itself, and on a periodic axis its image
   // in the halo beyond the opposite face (at most one: an axis has at least 2m + 2 cells).
@@ -270,7 +272,21 @@ void HierarchicalGrid::set_head(int level, const std::array<int, 3>& c, std::int
   for (int a = 0; a < count[2]; ++a)
     for (int b = 0; b < count[1]; ++b)
       for (int d = 0; d < count[0]; ++d)
-        grid.head[flat_index(level, {images[0][d], images[1][b], images[2][a]})] = first;
+        visit(flat_index(level, {images[0][d], images[1][b], images[2][a]}));
+}
+
+void HierarchicalGrid::set_head(int level, const std::array<int, 3>& c, std::int32_t first) {
+  std::int32_t* head = levels_[level].head.data();
+  for_each_image(level, c, [&](std::int32_t flat) { head[flat] = first; });
+}
+
+void HierarchicalGrid::set_cell_bound(int level, const std::array<int, 3>& c, double value) {
+  double* bound = levels_[level].cell_bound.data();
+  for_each_image(level, c, [&](std::int32_t flat) { bound[flat] = value; });
+}
+
+void HierarchicalGrid::clear_cell_bounds() {
+  for (Level& grid : levels_) std::fill(grid.cell_bound.begin(), grid.cell_bound.end(), 0.0);
 }
 
 double HierarchicalGrid::list_length_seen(int level) const {

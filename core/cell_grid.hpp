@@ -31,6 +31,9 @@ class HierarchicalGrid {
     /// empty. Every block is then a fixed set of flat offsets, at the box's faces too.
     std::array<int, 3> padded{1, 1, 1};
     std::vector<std::int32_t> head;  ///< First particle of each (padded) cell's list, or -1.
+    /// Per (padded) cell, an upper bound that the caller keeps on a quantity of the cell's
+    /// particles (raise_cell_bound); a halo cell of a periodic axis holds its image's.
+    std::vector<double> cell_bound;
     std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the block around a cell.
     /// Flat offsets of the far face layer of the block, per face (2 axis + (direction > 0)).
     std::array<std::vector<std::int32_t>, 6> slab_offsets;
@@ -102,6 +105,19 @@ class HierarchicalGrid {
     for (std::int32_t j = prev_[i]; j >= 0; j = prev_[j]) ++place;
     return place;
   }
+  /// Raises the bound of particle i's cell (and of its periodic images) to `value` if it is
+  /// below: a caller that raises it for every particle whose quantity may have grown keeps each
+  /// cell's bound at or above the largest value among the particles there since the last
+  /// clear_cell_bounds (a particle that leaves a cell leaves its value behind).
+  void raise_cell_bound(std::int32_t i, double value) {
+    const Place& at = place_[i];
+    if (value > levels_[at.level].cell_bound[flat_index(at.level, at.cell)])
+      set_cell_bound(at.level, at.cell, value);
+  }
+  /// Sets every cell's bound to 0.
+  void clear_cell_bounds();
+  /// The bound of each cell of `level`, indexed as head_array.
+  const double* cell_bound_array(int level) const { return levels_[level].cell_bound.data(); }
   /// Lower corner of particle i's cell, m.
   Vec3 cell_lower(std::int32_t i) const {
     const Level& grid = levels_[place_[i].level];
@@ -209,6 +225,11 @@ class HierarchicalGrid {
   }
   /// Sets the first particle of cell c of `level`, and of its periodic images in the halo.
   void set_head(int level, const std::array<int, 3>& c, std::int32_t first);
+  /// Sets the bound of cell c of `level`, and of its periodic images in the halo.
+  void set_cell_bound(int level, const std::array<int, 3>& c, double value);
+  /// Calls visit(flat index) for cell c of `level` and each of its periodic images in the halo.
+  template <class Visit>
+  void for_each_image(int level, const std::array<int, 3>& c, Visit&& visit) const;
   /// True when the block of `level` from c + from to c + to (per axis) crosses a periodic face.
   bool block_wraps(int level, const std::array<int, 3>& c, const int (&from)[3],
                    const int (&to)[3]) const;

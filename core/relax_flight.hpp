@@ -86,7 +86,17 @@ struct RelaxFlightBounds {
   /// |drive| + rate |v0|, each length by the sum of its components' magnitudes.
   /// (The operations in this order are those of the batch test, reach_tests in pair_batch.hpp.)
   double reach_bound(const Vec3& v0, double s) const {
-    const double speed = std::abs(v0.x()) + std::abs(v0.y()) + std::abs(v0.z());
+    return reach_bound_at_speed(speed_bound(v0), s);
+  }
+  /// The length that stands for |v0| in reach_bound: the sum of its components' magnitudes,
+  /// m/s.
+  static double speed_bound(const Vec3& v0) {
+    return std::abs(v0.x()) + std::abs(v0.y()) + std::abs(v0.z());
+  }
+  /// reach_bound for a velocity whose speed_bound is `speed` (m/s). It grows with the speed and
+  /// with s >= 0, computed in floating point too (each operation is monotone in its
+  /// non-negative operands): a bound on the speed gives a bound on the reach.
+  double reach_bound_at_speed(double speed, double s) const {
     return s * (speed + 0.5 * s * (drive + rate * speed));
   }
 };

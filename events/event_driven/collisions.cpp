@@ -39,6 +39,8 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
                           bj.fixed ? 0.0 : bj.inverse_inertia});
   if (options_.check_invariants && !bi.fixed && !bj.fixed)
     check_pair_invariants(i, j, momentum_before);
+  note_speed<Flight>(i);
+  note_speed<Flight>(j);
 
   const std::size_t species = statistics_.species_count;
   ++statistics_.pair_collisions[si * species + sj];
@@ -79,6 +81,7 @@ void EventDrivenEngine::collide_wall(std::int32_t i, std::int32_t w, double t) {
   const CollisionOutcome outcome =
       collide(law, n, ContactBody{m.velocity, b.spin, b.inverse_mass, m.radius, b.inverse_inertia},
               ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
+  note_speed<Flight>(i);
   ++statistics_.wall_collisions[si * statistics_.wall_count + w];
   ++statistics_.wall_events;
   statistics_.wall_impulse[w] -= outcome.impulse;
@@ -98,6 +101,7 @@ void EventDrivenEngine::cross_cell(std::int32_t i, int face) {
   // stored states never lag more than one cell behind (so one periodic image shift suffices).
   advance<Flight>(i, time_);
   hot_[i].position += grid_.cross(i, axis, direction);  // a periodic wrap: one box length
+  note_speed<Flight>(i);                                // into its new cell
   ++statistics_.cell_crossings;
   // Same trajectory: partners' predictions with i stay valid (no counter bump), and so does
   // i's own next collision.

@@ -86,6 +86,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
   body_.resize(n);
   counter_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
+  reset_cell_speeds();
   for (std::size_t i = 0; i < n; ++i) predict_any(static_cast<std::int32_t>(i));
 }
 
@@ -196,6 +197,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
     body_[i].last_collision = state.last_collision[i];
     load_records(static_cast<std::int32_t>(i));
   }
+  reset_cell_speeds();
 }
 
 void EventDrivenEngine::start_rate_monitor(double t) {

@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/cell_grid.hpp"
@@ -250,6 +251,23 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Particle i's earliest wall or pair collision before `limit` (its next crossing), or none.
   /// Reads the records, the grid and the counters only: safe to call for many particles at once.
   Event relax_collision(std::int32_t i, double limit) const;
+  /// drop_cells_out_of_reach (reach_cells.hpp) for i's own-level block `cells` (count of
+  /// them, `wrapped` as own_block tells); debug builds check every dropped cell's particles
+  /// against may_reach.
+  int drop_unreachable_cells(std::int32_t i, const ReachQuery& query, std::int32_t* cells,
+                             int count, bool wrapped) const;
+  /// Relax: sets each grid cell's bound (HierarchicalGrid::raise_cell_bound) to the largest
+  /// speed (RelaxFlightBounds::speed_bound) of its particles' stored velocities, and
+  /// speed_clock_ to the earliest clock. The bounds then stay valid as long as every particle
+  /// whose stored velocity changes or that enters a cell raises its cell's (note_speed).
+  void reset_cell_speeds();
+  /// Raises the speed bound of particle i's cell to i's stored speed (relax flights only: the
+  /// bounds serve relax predictions alone).
+  template <class Flight>
+  void note_speed(std::int32_t i) {
+    if constexpr (std::is_same_v<Flight, RelaxFlights>)
+      grid_.raise_cell_bound(i, RelaxFlightBounds::speed_bound(hot_[i].velocity));
+  }
   /// After a synchronising action: every particle's events predicted again (relax flights:
   /// planned in pieces taken in turn by this and the side thread, or on the worker threads
   /// from 3 threads on, scheduled in particle order; else one by one).
@@ -365,6 +383,9 @@ class EventDrivenEngine final : public CollisionMethod {
   /// particles are (HierarchicalGrid::list_length_seen above kLongLists), measured at each
   /// fluid step: their predictions walk deeper into each list without a branch.
   std::uint32_t long_lists_ = 0;
+  /// Relax: no stored clock is earlier than this (set with the cells' speed bounds by
+  /// reset_cell_speeds), s.
+  double speed_clock_ = 0;
   /// Work done on the particles by the gas since the start, J: by the gas forces of relax
   /// flights up to each particle's clock, and by the synchronising actions (drag kicks).
   double gas_work_ = 0;

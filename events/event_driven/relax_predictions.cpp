@@ -7,6 +7,7 @@
 
 #include "core/relax_roots.hpp"
 #include "events/event_driven/engine.hpp"
+#include "events/event_driven/reach_cells.hpp"
 
 namespace carom {
 
@@ -158,7 +159,9 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
   // was tested, so may_reach is asked again with the current one, as one at a time would).
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;
-  const int count = grid_.own_block(i, cells, wrapped);
+  int count = grid_.own_block(i, cells, wrapped);
+  if (options_.skip_unreachable_cells)
+    count = drop_unreachable_cells(i, query, cells, count, wrapped);
   const std::int32_t* head = grid_.head_array(grid_.level_of(i));
   const std::int32_t* next = grid_.next_array();
   const HotState* hot = hot_.data();
@@ -185,6 +188,40 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
       if (j != i) consider(j, true);
     });
   return best;
+}
+
+int EventDrivenEngine::drop_unreachable_cells(std::int32_t i, const ReachQuery& query,
+                                              std::int32_t* cells, int count,
+                                              [[maybe_unused]] bool wrapped) const {
+#ifndef NDEBUG
+  std::int32_t block[HierarchicalGrid::kMaxBlock];
+  std::copy(cells, cells + count, block);
+#endif
+  const int kept = drop_cells_out_of_reach(grid_, i, query, speed_clock_, cells, count);
+#ifndef NDEBUG
+  // The oracle: every particle of a dropped cell fails the reach test itself.
+  const int level = grid_.level_of(i);
+  for (int c = 0, k = 0; c < count; ++c) {
+    if (k < kept && cells[k] == block[c]) {
+      ++k;
+      continue;
+    }
+    for (std::int32_t j = grid_.head(level, block[c]); j >= 0; j = grid_.next(j))
+      assert(j == i ||
+             !(wrapped ? may_reach<true>(query, hot_[j]) : may_reach<false>(query, hot_[j])));
+  }
+#endif
+  return kept;
+}
+
+void EventDrivenEngine::reset_cell_speeds() {
+  grid_.clear_cell_bounds();
+  speed_clock_ = time_;
+  for (std::size_t i = 0; i < hot_.size(); ++i) {
+    const auto k = static_cast<std::int32_t>(i);
+    grid_.raise_cell_bound(k, RelaxFlightBounds::speed_bound(hot_[k].velocity));
+    speed_clock_ = std::min(speed_clock_, hot_[k].clock);
+  }
 }
 
 template <>
@@ -217,6 +254,7 @@ constexpr std::size_t kPlanChunk = 32;
 template <>
 void EventDrivenEngine::predict_all<RelaxFlights>() {
   const std::size_t n = hot_.size();
+  reset_cell_speeds();
   long_lists_ = 0;
   for (int l = 0; l < static_cast<int>(grid_.levels().size()) && l < 32; ++l)
     if (grid_.list_length_seen(l) > kLongLists) long_lists_ |= 1u << l;

@@ -244,8 +244,18 @@ class EventDrivenEngine final : public CollisionMethod {
   void scan_other_levels(std::int32_t i, Event& best, int axis = 0, int direction = 0) const;
 
   // Relax flights (relax_predictions.cpp).
-  /// Contact time of i and j if before `limit` (and the horizon), else kNever; s.
-  double relax_pair_time(std::int32_t i, std::int32_t j, double limit) const;
+  /// What relax_pair_time reads of particle i's stored state for every partner: |v| (m/s) and
+  /// |a(v)| (m/s^2), computed once per prediction.
+  struct RelaxMotion {
+    double speed, acceleration;
+    static RelaxMotion of(const PairState& state, const RelaxFlight& flight) {
+      return {state.velocity.norm(), flight.acceleration(state.velocity).norm()};
+    }
+  };
+  /// Contact time of i and j if before `limit` (and the horizon), else kNever; s. motion_i is
+  /// RelaxMotion::of i's record and flight.
+  double relax_pair_time(std::int32_t i, std::int32_t j, double limit,
+                         const RelaxMotion& motion_i) const;
   double relax_wall_time(std::int32_t i, const Wall& wall, double limit) const;
   Event relax_cell_crossing(std::int32_t i) const;
   /// Particle i's earliest wall or pair collision before `limit` (its next crossing), or none.

@@ -20,7 +20,8 @@ constexpr int kLongListWalk = 4;
 constexpr double kLongLists = 2.5;
 }  // namespace
 
-double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double limit) const {
+double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double limit,
+                                          const RelaxMotion& motion_i) const {
   const HotState& a = hot_[i];
   const HotState& b = hot_[j];
   const RelaxFlight& fa = flights_[i];
@@ -42,7 +43,7 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
   auto out_of_sweep = [&] {
     const double span_a = end - a.clock, span_b = end - b.clock;
     const double sweep =
-        span_a * (a.velocity.norm() + 0.5 * span_a * fa.acceleration(a.velocity).norm()) +
+        span_a * (motion_i.speed + 0.5 * span_a * motion_i.acceleration) +
         span_b * (b.velocity.norm() + 0.5 * span_b * fb.acceleration(b.velocity).norm());
     Vec3 gap = a.position - b.position;
     system_.domain.minimum_image(gap);
@@ -72,7 +73,8 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
   // A = |a_a(0)| + |a_b(0)|. If that line keeps farther than contact + A H^2 / 2 from the origin
   // over [0, H], the spheres cannot touch. Most candidates end here, with no exponential.
   const Vec3 u = va - vb;
-  const double accel = fa.acceleration(va).norm() + fb.acceleration(vb).norm();
+  const double accel = (dt_a > 0.0 ? fa.acceleration(va).norm() : motion_i.acceleration) +
+                       fb.acceleration(vb).norm();
   const double reach = contact + 0.5 * accel * horizon * horizon;
   const double u2 = u.squaredNorm();
   const double closest = u2 > 0.0 ? std::clamp(-dr.dot(u) / u2, 0.0, horizon) : 0.0;
@@ -145,10 +147,11 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
     return flights_[j].rate <= flight_bounds_.rate &&
            flights_[j].drive.cwiseAbs().sum() <= flight_bounds_.drive;
   };
+  const RelaxMotion motion = RelaxMotion::of(a, fa);
   auto consider = [&](std::int32_t j, bool wrapped) {
     assert(bounded(j));
     if (!(wrapped ? may_reach<true>(query, hot_[j]) : may_reach<false>(query, hot_[j]))) return;
-    const double t = relax_pair_time(i, j, limit);
+    const double t = relax_pair_time(i, j, limit, motion);
     if (t < best.time) {
       best = Event{t, j, counter_[j], EventKind::Pair};
       set_limit(t);

@@ -125,12 +125,13 @@ void GasCoupling::step(double t, const ParticleStore& particles, std::vector<Rel
     // each particle's in pieces shared with the side thread, their sums in particle order.
     const std::size_t n = particles.size();
     particle_drag_.resize(n);
+    take_cell_fields(false);
     for_chunks(side, n, kParticleChunk, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         Vec3 u = Vec3::Zero();
         double eps = 0.0;
         for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
-          u += weights_[w].second * solver_->cell_velocity(weights_[w].first);
+          u += weights_[w].second * cell_gas_velocity_[weights_[w].first];
           eps += weights_[w].second * porosity_[weights_[w].first];
         }
         particle_drag_[i] = drag_coefficient(i, particles, eps, (u - particles.velocity[i]).norm());
@@ -227,6 +228,17 @@ double GasCoupling::drag_coefficient(std::size_t i, const ParticleStore& particl
   return closure_->drag_coefficient(input);
 }
 
+void GasCoupling::take_cell_fields(bool gradient) {
+  const std::size_t cells = porosity_.size();
+  cell_gas_velocity_.resize(cells);
+  for (std::size_t c = 0; c < cells; ++c)
+    cell_gas_velocity_[c] = solver_->cell_velocity(static_cast<int>(c));
+  if (!gradient) return;
+  cell_pressure_gradient_.resize(cells);
+  for (std::size_t c = 0; c < cells; ++c)
+    cell_pressure_gradient_[c] = solver_->pressure_gradient(static_cast<int>(c));
+}
+
 void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights,
                               SideThread* side) {
   const std::size_t n = particles.size();
@@ -236,6 +248,7 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
   particle_porosity_.resize(n);
   particle_pressure_gradient_.resize(n);
   longitudinal_rates_.resize(keep_longitudinal_rates_ ? n : 0);
+  take_cell_fields(true);
   // Each particle's gas, drag and flight in pieces shared with the side thread...
   for_chunks(side, n, kParticleChunk, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
@@ -243,8 +256,8 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
       double eps = 0.0;
       for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w) {
         const auto [c, fraction] = weights_[w];
-        u += fraction * solver_->cell_velocity(c);
-        grad_p += fraction * solver_->pressure_gradient(c);
+        u += fraction * cell_gas_velocity_[c];
+        grad_p += fraction * cell_pressure_gradient_[c];
         eps += fraction * porosity_[c];
       }
       const Vec3& v = particles.velocity[i];

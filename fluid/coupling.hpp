@@ -164,6 +164,12 @@ class GasCoupling {
   std::vector<double> species_porosity_;         ///< Sum of eps_i per species (last step).
   std::vector<std::size_t> species_count_;       ///< Particles per species (last step).
   std::vector<Vec3> particle_gas_velocity_;      ///< u_i per particle (last step), m/s.
+  /// Per gas cell, the solver's centre velocity (m/s) and pressure gradient (Pa/m), taken once
+  /// before a loop over the particles reads them through their cell shares (each cell's value
+  /// is then computed once, not once for every share of every particle in it).
+  std::vector<Vec3> cell_gas_velocity_, cell_pressure_gradient_;
+  /// Fills cell_gas_velocity_ (and cell_pressure_gradient_ when `gradient`) from the solver.
+  void take_cell_fields(bool gradient);
   Vec3 total_drag_ = Vec3::Zero();
   bool keep_longitudinal_rates_ = false;
   std::vector<double> longitudinal_rates_;  ///< (1/m_i) d|F|/d|s| per particle (last step), 1/s.

@@ -11,7 +11,7 @@
 /// those cells are then dropped before the walk. A dropped cell holds no particle that the
 /// reach test would pass, so the prediction finds the same candidates in the same order and
 /// the same event, bit for bit (tests/test_reach_cells.cpp checks every dropped cell against
-/// may_reach). In the main job it ends about a third of the candidates before they are loaded.
+/// may_reach). In the main job it ends about 30 % of the candidates before they are loaded.
 #include <cstdint>
 
 #include "core/cell_grid.hpp"

@@ -10,10 +10,13 @@
 // candidate in another lane make ties).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
+#include "core/relax_roots.hpp"
 #include "core/rng.hpp"
 #include "events/event_driven/pair_batch.hpp"
 
@@ -109,16 +112,20 @@ void check_random_reach_batches(std::uint64_t seed) {
   Rng rng(seed);
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
   const Domain domain = test_box();
-  int checked = 0, refused = 0, accepted = 0;
+  int checked = 0, refused = 0, accepted = 0, lines_ended = 0;
   for (int round = 0; round < 400; ++round) {
     RelaxFlightBounds bounds{uniform(0.0, 40.0), uniform(0.0, 100.0)};
     const double end = uniform(0.0, 0.05);
-    const ReachQuery query{Vec3(uniform(0, 8), uniform(0, 8), uniform(1, 10)),
-                           uniform(0.2, 0.6),
-                           uniform(0.0, 0.3),
-                           end,
-                           bounds,
-                           domain};
+    ReachQuery query{Vec3(uniform(0, 8), uniform(0, 8), uniform(1, 10)),
+                     uniform(0.2, 0.6),
+                     uniform(0.0, 0.3),
+                     end,
+                     bounds,
+                     domain};
+    // The line test's part of the query.
+    query.velocity = Vec3(uniform(-3, 3), uniform(-3, 3), uniform(-3, 3));
+    query.clock = end - uniform(0.0, 0.05);
+    query.acceleration = uniform(0.0, 50.0);
     PairBatch batch;
     std::vector<PairState> records(PairBatch::kCapacity);
     const int count = 1 + round % PairBatch::kCapacity;
@@ -141,10 +148,15 @@ void check_random_reach_batches(std::uint64_t seed) {
     }
     batch.pad_to_vectors(batch.count, &records[0]);
     const std::uint64_t reached = reach_tests<kImage>(query, batch);
+    const std::uint64_t reached_lines = reach_tests<kImage, true>(query, batch);
     for (int k = 0; k < count; ++k) {
       const PairState& b = *batch.state[k];
       const bool scalar = may_reach<kImage>(query, b);
       ASSERT_EQ(((reached >> k) & 1) == 1, scalar) << "candidate " << k << ", round " << round;
+      const bool apart = lines_apart<kImage>(query, b);
+      ASSERT_EQ(((reached_lines >> k) & 1) == 1, scalar && !apart)
+          << "candidate " << k << ", round " << round << " (with the line test)";
+      lines_ended += scalar && apart;
       // The definition, in long double.
       Vec3 gap = query.position - b.position;
       if (kImage) domain.minimum_image(gap);
@@ -168,6 +180,7 @@ void check_random_reach_batches(std::uint64_t seed) {
   EXPECT_GT(checked, 10000);
   EXPECT_GT(refused, 1000) << "too few candidates beyond reach to test the refusals";
   EXPECT_GT(accepted, 1000) << "too few candidates within reach to test the acceptances";
+  EXPECT_GT(lines_ended, 1000) << "too few candidates within reach that the line test ends";
 }
 
 TEST(PairBatch, ReachTestsMatchScalarBitForBit) {
@@ -175,6 +188,95 @@ TEST(PairBatch, ReachTestsMatchScalarBitForBit) {
 }
 TEST(PairBatch, ReachTestsWithImagesMatchScalarBitForBit) {
   check_random_reach_batches<true>(6);
+}
+
+// The line test's promise (lines_apart): every pair it ends never touches before the query's
+// end, so relax_pair_time, which asks it first, returns what its exact tests and contact search
+// would (kNever). The reference is that search itself (relax_pair_contact_time, to round-off
+// with a touching tolerance of 1e-13 of the contact) on the states advanced to the later clock,
+// as relax_pair_time does it. Random pairs under strong, unequal drag and drive (the strays
+// |a| s^2 / 2 reach a sphere's diameter, so the test's bounds matter), clocks that differ,
+// positions from overlapping to a few diameters apart, velocities aimed at the partner or past
+// it, with and without periodic images. Both outcomes must be common: pairs the line test ends,
+// and pairs that touch (which it must not end); and it must end nearly every pair on one clock
+// that starts a fifth of the contact apart and separates under little drive and drag (what it
+// is for).
+template <bool kImage>
+void check_lines_apart_never_ends_a_contact(std::uint64_t seed) {
+  Rng rng(seed);
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+  auto random_vector = [&](double size) {
+    return Vec3(uniform(-size, size), uniform(-size, size), uniform(-size, size));
+  };
+  const Domain domain = test_box();
+  int ended = 0, touching = 0, separating = 0, separating_ended = 0;
+  for (int round = 0; round < 40000; ++round) {
+    const bool gentle = round % 4 == 0;  // little drive and drag: the lines nearly exact
+    const double drive_size = gentle ? 0.01 : 40.0, rate_size = gentle ? 0.1 : 30.0;
+    const RelaxFlight fa{uniform(0.0, rate_size), random_vector(drive_size)};
+    const RelaxFlight fb{round % 3 == 0 ? fa.rate : uniform(0.0, rate_size),
+                         random_vector(drive_size)};
+    RelaxFlightBounds bounds;
+    bounds.include(fa);
+    bounds.include(fb);
+    const double ra = uniform(0.2, 0.6), rb = uniform(0.2, 0.6), contact = ra + rb;
+    const Vec3 pa(uniform(0, 8), uniform(-1, 7), uniform(1, 10));
+    const Vec3 direction = random_vector(1.0).normalized();
+    Vec3 pb = pa + direction * (contact * uniform(0.95, 2.5));
+    if (kImage && round % 5 == 1) pb.x() += domain.length().x();  // an image across x
+    const double speed = uniform(0.0, 5.0);
+    Vec3 va = random_vector(speed), vb = random_vector(speed);
+    if (round % 3 == 1) vb = va + direction * uniform(-speed, speed);  // along the line
+    const double ca = uniform(0.0, 0.1), cb = gentle || round % 4 == 1 ? ca : uniform(0.0, 0.1);
+    const double end = std::max(ca, cb) + uniform(0.0, 0.2);
+
+    ReachQuery query{pa, ra, 0.0, end, bounds, domain};
+    query.velocity = va;
+    query.clock = ca;
+    query.acceleration = fa.acceleration(va).norm();
+    const PairState b{pb, cb, vb, rb};
+    const bool apart = lines_apart<kImage>(query, b);
+
+    // relax_pair_time's exact path: both states at the later clock, then the contact search.
+    const double t_ref = std::max(ca, cb);
+    Vec3 dr = pa - pb, wa = va, wb = vb;
+    if (t_ref > ca) {
+      dr += fa.displacement(va, t_ref - ca);
+      wa = fa.velocity(va, t_ref - ca);
+    }
+    if (t_ref > cb) {
+      dr -= fb.displacement(vb, t_ref - cb);
+      wb = fb.velocity(vb, t_ref - cb);
+    }
+    if (kImage) domain.minimum_image(dr);
+    const double s = relax_pair_contact_time(dr, wa, fa, wb, fb, contact, end - t_ref);
+    if (apart) {
+      ASSERT_EQ(s, kNever) << "round " << round << ": the line test ended a pair that touches at "
+                           << s;
+    }
+    ended += apart;
+    touching += s != kNever;
+    Vec3 gap = pa - pb;
+    if (kImage) domain.minimum_image(gap);
+    if (gentle && gap.norm() > 1.2 * contact && gap.dot(va - vb) > 0.0) {
+      ++separating;
+      separating_ended += apart;
+    }
+  }
+  std::printf("pairs ended by the line test %d, touching %d, separating %d (ended %d)\n", ended,
+              touching, separating, separating_ended);
+  EXPECT_GT(ended, 4000) << "too few pairs ended by the line test";
+  EXPECT_GT(touching, 2000) << "too few touching pairs to check";
+  EXPECT_GT(separating, 1000);
+  EXPECT_GT(separating_ended, 0.9 * separating)
+      << "the line test should end nearly every pair that starts apart and separates";
+}
+
+TEST(PairBatch, LinesApartNeverEndsAContact) {
+  check_lines_apart_never_ends_a_contact<false>(7);
+}
+TEST(PairBatch, LinesApartWithImagesNeverEndsAContact) {
+  check_lines_apart_never_ends_a_contact<true>(8);
 }
 
 TEST(PairBatch, StraightFlightsMatchScalarBitForBit) {

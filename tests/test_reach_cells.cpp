@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -162,66 +163,88 @@ TEST(ReachCells, CellBoundsReachThePeriodicImages) {
   for (int c = 0; c < count; ++c) EXPECT_EQ(bound[cells[c]], 0.0);
 }
 
-// A bidisperse gas (600 particles, fines of a third of the large diameter, 85 % by number, in
-// one grid: cells of about four particles) under unequal drag, walls in z, periodic in x and y,
-// 2.5 s (about 7000 collisions; about 20 s in the debug build): with the drop (the default) and
-// without it the run is the same bit for bit, as the drop only spares the walk of cells whose
-// particles the reach test would end; and every 0.05 s each particle's cell holds a speed bound at
-// or above its speed (what the drop assumes; the debug build checks it at every prediction).
-TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutDroppingCells) {
-  auto run = [](bool drop) {
-    GranularGasSpec spec;
-    spec.count = 600;
-    spec.volume_fraction = 0.3;
-    spec.fines_diameter_ratio = 1.0 / 3.0;
-    spec.fines_number_fraction = 0.85;
-    spec.seed = 13;
-    System system = make_granular_gas(spec);
-    // Walls in z: the gas moved up by half a large diameter into a box one diameter taller.
-    for (Vec3& r : system.particles.position) r.z() += 0.55;
-    system.domain.upper.z() += 1.1;
-    system.domain.periodic = {true, true, false};
-    system.walls = box_walls(system.domain);
-    system.flight.gravity = Vec3(0, 0, -1.0);
-    system.materials = MaterialTable(system.species.size(), system.walls.size(),
-                                     ContactLaw{0.9, 0.2, 0.3}, ContactLaw{0.9, 0.2, 0.3});
-    EventDrivenOptions options;
-    options.flight_model = FlightModel::Relax;
-    options.grid_level_ratio = 0.0;  // one grid: the fines' cells are three of their diameters
-    options.skip_unreachable_cells = drop;
-    options.threads = 1;
-    options.collapse.contact_time = 1e-3;  // the TC model: the bed that settles on the floor
-    auto sim = std::make_unique<EventDrivenEngine>(system, options);
-    Rng rng(5);
-    sim->add_synchronising_action("fluid_step", 0.0, 0.02, [rng](GlobalStep& step) mutable {
-      for (std::size_t i = 0; i < step.flights.size(); ++i) {
-        // One particle in twenty in a fast jet: it speeds up after the step's reset of the
-        // bounds and enters cells of slower particles (their bounds must be raised then).
-        const double rate = 20.0 * rng.uniform(), jet = i % 20 == 0 ? 30.0 : 6.0;
-        const Vec3 gas(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
-        step.flights[i] = RelaxFlight{rate, Vec3(0, 0, -1.0) + rate * jet * gas};
-      }
-    });
-    // In pieces: after each, every particle's cell holds a speed bound at or above its stored
-    // speed (raised at every collision and crossing, set at every fluid step).
-    for (int k = 1; k <= 50; ++k) {
-      sim->run_until(0.05 * k);
-      const HierarchicalGrid& grid = sim->grid();
-      const ParticleStore& p = sim->system().particles;
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        const auto id = static_cast<std::int32_t>(i);
-        std::int32_t cells[HierarchicalGrid::kMaxBlock];
-        bool wrapped = false;
-        const int count = grid.own_block(id, cells, wrapped);
-        const double bound = grid.cell_bound_array(grid.level_of(id))[cells[count / 2]];
-        EXPECT_GE(bound, RelaxFlightBounds::speed_bound(p.velocity[i]))
-            << "particle " << i << " at t = " << sim->time();
-      }
+/// A bidisperse gas (600 particles, fines of a third of the large diameter, 85 % by number, in
+/// one grid: cells of about four particles) under unequal drag, walls in z, periodic in x and y,
+/// with the TC model (the bed that settles on the floor), run to `end` in pieces of 0.05 s,
+/// after each of which `check` sees the engine.
+template <class Check>
+std::unique_ptr<EventDrivenEngine> run_relax_gas(bool drop, bool lines, double end, Check check) {
+  GranularGasSpec spec;
+  spec.count = 600;
+  spec.volume_fraction = 0.3;
+  spec.fines_diameter_ratio = 1.0 / 3.0;
+  spec.fines_number_fraction = 0.85;
+  spec.seed = 13;
+  System system = make_granular_gas(spec);
+  // Walls in z: the gas moved up by half a large diameter into a box one diameter taller.
+  for (Vec3& r : system.particles.position) r.z() += 0.55;
+  system.domain.upper.z() += 1.1;
+  system.domain.periodic = {true, true, false};
+  system.walls = box_walls(system.domain);
+  system.flight.gravity = Vec3(0, 0, -1.0);
+  system.materials = MaterialTable(system.species.size(), system.walls.size(),
+                                   ContactLaw{0.9, 0.2, 0.3}, ContactLaw{0.9, 0.2, 0.3});
+  EventDrivenOptions options;
+  options.flight_model = FlightModel::Relax;
+  options.grid_level_ratio = 0.0;  // one grid: the fines' cells are three of their diameters
+  options.skip_unreachable_cells = drop;
+  options.stored_line_test = lines;
+  options.threads = 1;
+  options.collapse.contact_time = 1e-3;
+  auto sim = std::make_unique<EventDrivenEngine>(system, options);
+  Rng rng(5);
+  sim->add_synchronising_action("fluid_step", 0.0, 0.02, [rng](GlobalStep& step) mutable {
+    for (std::size_t i = 0; i < step.flights.size(); ++i) {
+      // One particle in twenty in a fast jet: it speeds up after the step's reset of the
+      // bounds and enters cells of slower particles (their bounds must be raised then).
+      const double rate = 20.0 * rng.uniform(), jet = i % 20 == 0 ? 30.0 : 6.0;
+      const Vec3 gas(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+      step.flights[i] = RelaxFlight{rate, Vec3(0, 0, -1.0) + rate * jet * gas};
     }
-    return sim;
+  });
+  const int pieces = static_cast<int>(std::lround(end / 0.05));
+  for (int k = 1; k <= pieces; ++k) {
+    sim->run_until(0.05 * k);
+    check(*sim);
+  }
+  return sim;
+}
+
+/// The two runs' particles, event counts and collision counts are the same bit for bit.
+void expect_same_runs(const EventDrivenEngine& a, const EventDrivenEngine& b) {
+  EXPECT_EQ(a.statistics().pair_events, b.statistics().pair_events);
+  EXPECT_EQ(a.statistics().wall_events, b.statistics().wall_events);
+  EXPECT_EQ(a.statistics().cell_crossings, b.statistics().cell_crossings);
+  for (std::size_t i = 0; i < a.particle_count(); ++i) {
+    ASSERT_EQ(a.position(i), b.position(i)) << "particle " << i;
+    ASSERT_EQ(a.velocity(i), b.velocity(i)) << "particle " << i;
+    ASSERT_EQ(a.spin(i), b.spin(i)) << "particle " << i;
+  }
+}
+
+// The gas above for 2.5 s (about 7000 collisions; about 20 s in the debug build): with the drop
+// (the default) and without it the run is the same bit for bit, as the drop only spares the
+// walk of cells whose particles the reach test would end; and every 0.05 s each particle's cell
+// holds a speed bound at or above its speed (what the drop assumes; the debug build checks it
+// at every prediction).
+TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutDroppingCells) {
+  auto bounds_hold = [](const EventDrivenEngine& sim) {
+    // Every particle's cell holds a speed bound at or above its stored speed (raised at every
+    // collision and crossing, set at every fluid step).
+    const HierarchicalGrid& grid = sim.grid();
+    const ParticleStore& p = sim.system().particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const auto id = static_cast<std::int32_t>(i);
+      std::int32_t cells[HierarchicalGrid::kMaxBlock];
+      bool wrapped = false;
+      const int count = grid.own_block(id, cells, wrapped);
+      const double bound = grid.cell_bound_array(grid.level_of(id))[cells[count / 2]];
+      EXPECT_GE(bound, RelaxFlightBounds::speed_bound(p.velocity[i]))
+          << "particle " << i << " at t = " << sim.time();
+    }
   };
-  const auto plain = run(false);
-  const auto dropping = run(true);
+  const auto plain = run_relax_gas(false, true, 2.5, bounds_hold);
+  const auto dropping = run_relax_gas(true, true, 2.5, bounds_hold);
   ASSERT_GT(plain->statistics().pair_events, 4000u) << "the run must have collisions to compare";
   std::printf("pair collisions %llu, wall collisions %llu\n",
               static_cast<unsigned long long>(plain->statistics().pair_events),
@@ -229,14 +252,19 @@ TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutDroppingCells) {
   // The drop is made on levels whose cells hold several particles (list_length_seen above 2.5,
   // kLongLists in relax_predictions.cpp): this gas must be one.
   EXPECT_GT(dropping->grid().list_length_seen(0), 3.0) << "the lists must be long for the drop";
-  EXPECT_EQ(dropping->statistics().pair_events, plain->statistics().pair_events);
-  EXPECT_EQ(dropping->statistics().wall_events, plain->statistics().wall_events);
-  EXPECT_EQ(dropping->statistics().cell_crossings, plain->statistics().cell_crossings);
-  for (std::size_t i = 0; i < plain->particle_count(); ++i) {
-    ASSERT_EQ(dropping->position(i), plain->position(i)) << "particle " << i;
-    ASSERT_EQ(dropping->velocity(i), plain->velocity(i)) << "particle " << i;
-    ASSERT_EQ(dropping->spin(i), plain->spin(i)) << "particle " << i;
-  }
+  expect_same_runs(*dropping, *plain);
+}
+
+// The same gas for 1.5 s with the line test of the stored states (lines_apart, the default) and
+// without it: the same run bit for bit, as the test only ends pairs that relax_pair_time's exact
+// tests and contact search end too. (Its unit tests, in test_pair_batch.cpp, check that bound on
+// random pairs; here it meets the collisions, contacts and crossings of a settling bed.)
+TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutTheLineTest) {
+  auto nothing = [](const EventDrivenEngine&) {};
+  const auto plain = run_relax_gas(true, false, 1.5, nothing);
+  const auto lines = run_relax_gas(true, true, 1.5, nothing);
+  ASSERT_GT(plain->statistics().pair_events, 2000u) << "the run must have collisions to compare";
+  expect_same_runs(*lines, *plain);
 }
 
 }  // namespace

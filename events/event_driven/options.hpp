@@ -31,6 +31,11 @@ struct EventDrivenOptions {
   /// (from a bound on the speeds in each cell). The events are the same bit for bit either
   /// way: off only to check that (the tests' oracle) or to measure what it saves.
   bool skip_unreachable_cells = true;
+  /// Relax pair predictions first test the straight lines of the two stored states (no
+  /// exponential, no square root, no flight read) and end the pairs that cannot touch by them.
+  /// The events are the same bit for bit either way: off only to check that (the tests'
+  /// oracle) or to measure what it saves.
+  bool stored_line_test = true;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.
 #ifdef NDEBUG

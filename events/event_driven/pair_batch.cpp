@@ -136,12 +136,16 @@ CAROM_LANES_INLINE Lanes magnitude(Lanes x) {
   return select(x < splat(0.0), -x, x);
 }
 
-template <bool kImage>
+template <bool kImage, bool kLines>
 CAROM_LANES_INLINE std::uint64_t reach_tests_impl(const ReachQuery& q, const PairBatch& batch) {
   const Lanes pax = splat(q.position.x()), pay = splat(q.position.y()), paz = splat(q.position.z());
   const Lanes radius_a = splat(q.radius), sweep_a = splat(q.sweep), end = splat(q.end);
   const Lanes drive = splat(q.bounds.drive), rate = splat(q.bounds.rate), half = splat(0.5);
   const Lanes margin = splat(1.0 + 1e-12);
+  // The line test's query.
+  const Lanes vax = splat(q.velocity.x()), vay = splat(q.velocity.y()), vaz = splat(q.velocity.z());
+  const Lanes clock_a = splat(q.clock), acceleration_a = splat(q.acceleration);
+  const Lanes span_a = end - clock_a, line_margin = splat(1.0 + 1e-9), zero = splat(0.0);
   std::uint64_t reached = 0;
   const Vec3 length = q.domain.length();
   for (int k = 0; k < batch.count; k += 4) {
@@ -158,25 +162,55 @@ CAROM_LANES_INLINE std::uint64_t reach_tests_impl(const ReachQuery& q, const Pai
     const Lanes speed = magnitude(motion[0]) + magnitude(motion[1]) + magnitude(motion[2]);
     const Lanes sweep = span * (speed + half * span * (drive + rate * speed));
     const Lanes reach = (radius_a + motion[3] + sweep_a + sweep) * margin;
-    const Mask beyond = dx * dx + dy * dy + dz * dz > reach * reach;
-    for (int l = 0; l < 4; ++l) reached |= std::uint64_t(beyond[l] == 0) << (k + l);
+    Mask out = dx * dx + dy * dy + dz * dz > reach * reach;
+    if constexpr (kLines) {
+      // lines_apart's operations in their order.
+      const Lanes clock_b = place[3];
+      const Lanes t_ref = select(clock_a > clock_b, clock_a, clock_b);
+      const Lanes dt_a = t_ref - clock_a, dt_b = t_ref - clock_b, horizon = end - t_ref;
+      const Lanes vbx = motion[0], vby = motion[1], vbz = motion[2];
+      Lanes lx = pax - place[0] + dt_a * vax - dt_b * vbx;
+      Lanes ly = pay - place[1] + dt_a * vay - dt_b * vby;
+      Lanes lz = paz - place[2] + dt_a * vaz - dt_b * vbz;
+      if constexpr (kImage) {
+        if (q.domain.periodic[0]) lx = nearest_image(lx, length.x());
+        if (q.domain.periodic[1]) ly = nearest_image(ly, length.y());
+        if (q.domain.periodic[2]) lz = nearest_image(lz, length.z());
+      }
+      const Lanes ux = vax - vbx, uy = vay - vby, uz = vaz - vbz;
+      const Lanes acceleration_b = drive + rate * speed;
+      const Lanes stray = half * (acceleration_a * span_a * span_a + acceleration_b * span * span);
+      const Lanes line_reach = (radius_a + motion[3] + stray) * line_margin;
+      const Lanes reach2 = line_reach * line_reach;
+      const Lanes u2 = ux * ux + uy * uy + uz * uz, du = lx * ux + ly * uy + lz * uz;
+      const Lanes ex = lx + horizon * ux, ey = ly + horizon * uy, ez = lz + horizon * uz;
+      const Lanes cx = ly * uz - lz * uy, cy = lz * ux - lx * uz, cz = lx * uy - ly * ux;
+      const Mask at_start = lx * lx + ly * ly + lz * lz > reach2;
+      const Mask at_end = ex * ex + ey * ey + ez * ez > reach2;
+      const Mask between = cx * cx + cy * cy + cz * cz > reach2 * u2;
+      const Mask apart = du >= zero ? at_start : (-du >= horizon * u2 ? at_end : between);
+      out |= apart;
+    }
+    for (int l = 0; l < 4; ++l) reached |= std::uint64_t(out[l] == 0) << (k + l);
   }
   return reached;
 }
 }  // namespace
 
-#define CAROM_REACH_TESTS(I)                                                              \
-  __attribute__((target_clones("avx2", "default"))) static std::uint64_t reach_tests_##I( \
-      const ReachQuery& q, const PairBatch& batch) {                                      \
-    return reach_tests_impl<I>(q, batch);                                                 \
-  }                                                                                       \
-  template <>                                                                             \
-  std::uint64_t reach_tests<I>(const ReachQuery& q, const PairBatch& batch) {             \
-    return reach_tests_##I(q, batch);                                                     \
+#define CAROM_REACH_TESTS(I, L)                                                              \
+  __attribute__((target_clones("avx2", "default"))) static std::uint64_t reach_tests_##I##L( \
+      const ReachQuery& q, const PairBatch& batch) {                                         \
+    return reach_tests_impl<I, L>(q, batch);                                                 \
+  }                                                                                          \
+  template <>                                                                                \
+  std::uint64_t reach_tests<I, L>(const ReachQuery& q, const PairBatch& batch) {             \
+    return reach_tests_##I##L(q, batch);                                                     \
   }
 
-CAROM_REACH_TESTS(false)
-CAROM_REACH_TESTS(true)
+CAROM_REACH_TESTS(false, false)
+CAROM_REACH_TESTS(true, false)
+CAROM_REACH_TESTS(false, true)
+CAROM_REACH_TESTS(true, true)
 
 #undef CAROM_REACH_TESTS
 

@@ -177,6 +177,10 @@ struct ReachQuery {
   double end;     ///< s.
   RelaxFlightBounds bounds;  ///< Bounds on every candidate's flight.
   Domain domain;             ///< For the periodic images (used with kImage only).
+  // For the line test (lines_apart) only:
+  Vec3 velocity = Vec3::Zero();  ///< The query's stored velocity, m/s.
+  double clock = 0.0;            ///< The query's clock, s.
+  double acceleration = 0.0;     ///< |a(v)| of the query's stored state (its flight), m/s^2.
 };
 
 /// Whether candidate b may come within contact of the query before q.end: false when the
@@ -201,10 +205,57 @@ inline bool may_reach(const ReachQuery& q, const PairState& b) {
   return !(dx * dx + dy * dy + dz * dz > reach * reach);
 }
 
-/// The candidates k < batch.count for which may_reach<kImage>(query, candidate k) holds, as
-/// the bits k of the result (the same decision bit for bit), four candidates at a time.
-/// batch.time and batch.earliest are left as they are.
+/// Whether candidate b and the query cannot touch before q.end, from their stored states alone
+/// (no exponential, no square root, no flight read). Each particle strays from the straight
+/// line p + v (t - clock) of its stored state by at most |a(v)| (t - clock)^2 / 2 (its
+/// acceleration only decays: relax_flight.hpp); the query's |a(v)| is q.acceleration, b's is
+/// bounded by q.bounds (|drive| + rate |v|, lengths as sums of magnitudes). So if the relative
+/// line, from the later clock t_ref to q.end, keeps farther than the radii plus both strays,
+/// they cannot touch. Its closest approach is taken without a division: at t_ref when the
+/// pair separates there, at q.end when it still approaches there, else |d x u| / |u| (no
+/// cancellation where d and u are nearly parallel). A relative margin of 1e-9 covers the
+/// round-off of the lengths and of the trajectories themselves, far above the touching
+/// tolerance of the contact search: every pair it ends, relax_pair_time's exact tests and
+/// search end too (tests/test_pair_batch.cpp checks that on random pairs). The scalar reference
+/// for reach_tests<kImage, true>; the relax predictions' most frequent rejection (about three
+/// candidates in four that pass may_reach in a dense bed: pairs in contact that separate).
 template <bool kImage>
+inline bool lines_apart(const ReachQuery& q, const PairState& b) {
+  const double t_ref = q.clock > b.clock ? q.clock : b.clock;
+  const double dt_a = t_ref - q.clock, dt_b = t_ref - b.clock, horizon = q.end - t_ref;
+  double dx = q.position.x() - b.position.x() + dt_a * q.velocity.x() - dt_b * b.velocity.x();
+  double dy = q.position.y() - b.position.y() + dt_a * q.velocity.y() - dt_b * b.velocity.y();
+  double dz = q.position.z() - b.position.z() + dt_a * q.velocity.z() - dt_b * b.velocity.z();
+  if constexpr (kImage) {
+    Vec3 dr(dx, dy, dz);
+    q.domain.minimum_image(dr);
+    dx = dr.x();
+    dy = dr.y();
+    dz = dr.z();
+  }
+  const double ux = q.velocity.x() - b.velocity.x();
+  const double uy = q.velocity.y() - b.velocity.y();
+  const double uz = q.velocity.z() - b.velocity.z();
+  const double speed_b =
+      std::abs(b.velocity.x()) + std::abs(b.velocity.y()) + std::abs(b.velocity.z());
+  const double acceleration_b = q.bounds.drive + q.bounds.rate * speed_b;
+  const double span_a = q.end - q.clock, span_b = q.end - b.clock;
+  const double stray = 0.5 * (q.acceleration * span_a * span_a + acceleration_b * span_b * span_b);
+  const double reach = (q.radius + b.radius + stray) * (1.0 + 1e-9);
+  const double reach2 = reach * reach;
+  const double u2 = ux * ux + uy * uy + uz * uz, du = dx * ux + dy * uy + dz * uz;
+  const double ex = dx + horizon * ux, ey = dy + horizon * uy, ez = dz + horizon * uz;
+  const double cx = dy * uz - dz * uy, cy = dz * ux - dx * uz, cz = dx * uy - dy * ux;
+  const bool at_start = dx * dx + dy * dy + dz * dz > reach2;
+  const bool at_end = ex * ex + ey * ey + ez * ez > reach2;
+  const bool between = cx * cx + cy * cy + cz * cz > reach2 * u2;
+  return du >= 0.0 ? at_start : (-du >= horizon * u2 ? at_end : between);
+}
+
+/// The candidates k < batch.count for which may_reach<kImage>(query, candidate k) holds (and,
+/// with kLines, lines_apart<kImage> does not), as the bits k of the result (the same decisions
+/// bit for bit), four candidates at a time. batch.time and batch.earliest are left as they are.
+template <bool kImage, bool kLines = false>
 std::uint64_t reach_tests(const ReachQuery& query, const PairBatch& batch);
 static_assert(PairBatch::kCapacity <= 64, "reach_tests answers with one bit per candidate");
 

@@ -148,9 +148,18 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
            flights_[j].drive.cwiseAbs().sum() <= flight_bounds_.drive;
   };
   const RelaxMotion motion = RelaxMotion::of(a, fa);
+  // Of the candidates that may reach, three in four are pairs in contact that separate (a dense
+  // bed): the straight lines of their stored states end them (lines_apart), before any flight
+  // is read or state advanced, four at a time in the batch.
+  const bool lines = options_.stored_line_test;
+  query.velocity = a.velocity;
+  query.clock = a.clock;
+  query.acceleration = motion.acceleration;
   auto consider = [&](std::int32_t j, bool wrapped) {
     assert(bounded(j));
-    if (!(wrapped ? may_reach<true>(query, hot_[j]) : may_reach<false>(query, hot_[j]))) return;
+    const HotState& b = hot_[j];
+    if (!(wrapped ? may_reach<true>(query, b) : may_reach<false>(query, b))) return;
+    if (lines && (wrapped ? lines_apart<true>(query, b) : lines_apart<false>(query, b))) return;
     const double t = relax_pair_time(i, j, limit, motion);
     if (t < best.time) {
       best = Event{t, j, counter_[j], EventKind::Pair};
@@ -159,7 +168,8 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
   };
   // The own level's candidates, gathered in the cells' order and tested in batches; those that
   // pass are considered one at a time in that order (the limit may have fallen since the batch
-  // was tested, so may_reach is asked again with the current one, as one at a time would).
+  // was tested, so may_reach and lines_apart are asked again with the current one, as one at
+  // a time would).
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;
   int count = grid_.own_block(i, cells, wrapped);
@@ -180,8 +190,10 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
     for (int k = 0; k < found; ++k)
       assert(bounded(static_cast<std::int32_t>(batch.state[k] - hot)));
 #endif
-    std::uint64_t reached =
-        wrapped ? reach_tests<true>(query, batch) : reach_tests<false>(query, batch);
+    std::uint64_t reached = wrapped ? (lines ? reach_tests<true, true>(query, batch)
+                                             : reach_tests<true, false>(query, batch))
+                                    : (lines ? reach_tests<false, true>(query, batch)
+                                             : reach_tests<false, false>(query, batch));
     reached &= found == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << found) - 1;
     for (; reached != 0; reached &= reached - 1)  // in the cells' order
       consider(static_cast<std::int32_t>(batch.state[std::countr_zero(reached)] - hot), wrapped);

@@ -12,7 +12,10 @@
 namespace carom {
 
 namespace {
+/// i modulo n in [0, n): a branch where i is inside already (a sphere's cells nearly always are:
+/// the integer division cost more than the rest of a one-cell split).
 int wrap(int i, int n) {
+  if (i >= 0 && i < n) return i;
   const int m = i % n;
   return m < 0 ? m + n : m;
 }
@@ -24,10 +27,10 @@ struct AxisSpan {
   std::vector<double> edges;  ///< count + 1 face positions minus the centre, clamped to [-r, r].
 };
 
-void span_axis(const CellLayout& layout, bool periodic, int k, double centre, double radius,
-               AxisSpan& span) {
+/// The first and last cell a sphere spans along axis k (h: the cell length).
+void span_cells(const CellLayout& layout, bool periodic, int k, double h, double centre,
+                double radius, AxisSpan& span) {
   const int n = layout.cells[k];
-  const double h = (layout.upper[k] - layout.lower[k]) / n;
   int first = static_cast<int>(std::floor((centre - radius - layout.lower[k]) / h));
   int last = static_cast<int>(std::ceil((centre + radius - layout.lower[k]) / h)) - 1;
   last = std::max(last, first);
@@ -37,6 +40,12 @@ void span_axis(const CellLayout& layout, bool periodic, int k, double centre, do
   }
   span.first = first;
   span.count = last - first + 1;
+}
+
+/// The faces of the cells span_cells found, relative to the centre.
+void span_edges(const CellLayout& layout, bool periodic, int k, double h, double centre,
+                double radius, AxisSpan& span) {
+  const int n = layout.cells[k], first = span.first, last = first + span.count - 1;
   span.edges.resize(span.count + 1);
   for (int j = 0; j <= span.count; ++j)
     span.edges[j] = std::clamp(layout.lower[k] + (first + j) * h - centre, -radius, radius);
@@ -50,7 +59,8 @@ void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
                   double radius, std::vector<CellShare>& shares) {
   thread_local std::array<AxisSpan, 3> span;
   thread_local std::vector<double> corner;
-  for (int k = 0; k < 3; ++k) span_axis(layout, periodic[k], k, centre[k], radius, span[k]);
+  const Vec3 h = layout.cell_size();
+  for (int k = 0; k < 3; ++k) span_cells(layout, periodic[k], k, h[k], centre[k], radius, span[k]);
   const int nx = layout.cells[0], ny = layout.cells[1], nz = layout.cells[2];
   auto cell_index = [&](int p, int q, int s) {
     return layout.index(wrap(span[0].first + p, nx), wrap(span[1].first + q, ny),
@@ -61,6 +71,7 @@ void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
     shares.push_back({cell_index(0, 0, 0), 1.0});
     return;
   }
+  for (int k = 0; k < 3; ++k) span_edges(layout, periodic[k], k, h[k], centre[k], radius, span[k]);
   // Ball-corner volumes at the grid nodes; each cell's volume by inclusion-exclusion.
   const int sx = mx + 1, sy = my + 1;
   corner.resize(static_cast<std::size_t>(sx) * sy * (mz + 1));

@@ -184,6 +184,27 @@ RelaxContactSearch relax_pair_contact_search(const Vec3& dr, const Vec3& va, con
   return earliest_contact(probe_at, horizon);
 }
 
+bool relax_pair_separating(const Vec3& dr, const Vec3& va, const RelaxFlight& fa, const Vec3& vb,
+                           const RelaxFlight& fb, double horizon) {
+  const Vec3 u = va - vb;
+  // |dr| G'(0), less a bound far above the round-off of either dot product (its terms may
+  // cancel): what the search's n . u can be no smaller than, times |dr|.
+  const double approach = dr.dot(u) - 1e-12 * (dr.cwiseAbs().sum() * u.cwiseAbs().sum());
+  if (!(approach > 0.0)) return false;
+  // The search's K at its first step is at most relative_acceleration_bound's difference form,
+  // |a_a - a_b| + min(1, |k_a - k_b| H) min(|a_a|, |a_b|); each length here a sum of
+  // magnitudes (never below the length), with a relative margin for their round-off.
+  const Vec3 acceleration_a = fa.acceleration(va), acceleration_b = fb.acceleration(vb);
+  const double mismatch = std::min(1.0, std::abs(fa.rate - fb.rate) * horizon);
+  const double curvature =
+      ((acceleration_a - acceleration_b).cwiseAbs().sum() +
+       mismatch * std::min(acceleration_a.cwiseAbs().sum(), acceleration_b.cwiseAbs().sum())) *
+      (1.0 + 1e-9);
+  // G' > K H / 2 (then the first step, at least 2 G' / K, passes the horizon), squared.
+  const double turn = 0.5 * curvature * horizon;
+  return approach * approach > turn * turn * dr.squaredNorm() * (1.0 + 1e-9);
+}
+
 double relax_pair_contact_time(const Vec3& dr, const Vec3& va, const RelaxFlight& fa,
                                const Vec3& vb, const RelaxFlight& fb, double contact,
                                double horizon) {

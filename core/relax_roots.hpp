@@ -62,6 +62,19 @@ RelaxContactSearch relax_cylinder_contact_search(const Vec3& offset, const Vec3&
                                                  const RelaxFlight& f, double reach,
                                                  double horizon);
 
+/// Whether relax_pair_contact_time(dr, va, fa, vb, fb, contact, horizon) is kNever for any
+/// contact, found at the search's first step with no state advanced: the pair separates
+/// (dr . u > 0, u = va - vb) faster than the relative acceleration can turn it back within the
+/// horizon, so the search's first step (its lower bound on the gap, G + G' h - K h^2 / 2 with
+/// G' = n . u > K horizon / 2) passes the horizon. K is bounded as the search bounds it
+/// (relative_acceleration_bound's difference form) with lengths as sums of magnitudes, the
+/// slope with a margin of 1e-12 |dr| |u| over the round-off of either computation of it. Half
+/// of a dense bed's searches are such pairs: in contact (or nearly), moving apart; this answers
+/// them without the search's end states (two exponentials) and square roots.
+/// tests/test_relax_roots.cpp checks it against the search.
+bool relax_pair_separating(const Vec3& dr, const Vec3& va, const RelaxFlight& fa, const Vec3& vb,
+                           const RelaxFlight& fb, double horizon);
+
 /// Iterations after which a conservative-advancement search gives up (never reached in the
 /// tests; see relax_contact_cap_hits).
 inline constexpr int kRelaxContactMaxIterations = 1000;

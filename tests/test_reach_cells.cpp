@@ -188,7 +188,7 @@ std::unique_ptr<EventDrivenEngine> run_relax_gas(bool drop, bool lines, double e
   options.flight_model = FlightModel::Relax;
   options.grid_level_ratio = 0.0;  // one grid: the fines' cells are three of their diameters
   options.skip_unreachable_cells = drop;
-  options.stored_line_test = lines;
+  options.relax_pair_shortcuts = lines;
   options.threads = 1;
   options.collapse.contact_time = 1e-3;
   auto sim = std::make_unique<EventDrivenEngine>(system, options);
@@ -255,11 +255,13 @@ TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutDroppingCells) {
   expect_same_runs(*dropping, *plain);
 }
 
-// The same gas for 1.5 s with the line test of the stored states (lines_apart, the default) and
-// without it: the same run bit for bit, as the test only ends pairs that relax_pair_time's exact
-// tests and contact search end too. (Its unit tests, in test_pair_batch.cpp, check that bound on
-// random pairs; here it meets the collisions, contacts and crossings of a settling bed.)
-TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutTheLineTest) {
+// The same gas for 1.5 s with the relax pair shortcuts (the default: the line test of the
+// stored states, lines_apart, and the separating pairs, relax_pair_separating) and without them:
+// the same run bit for bit, as they only end pairs that relax_pair_time's exact tests and
+// contact search end too. (Their unit tests, in test_pair_batch.cpp and test_relax_roots.cpp,
+// check that on random pairs; here they meet the collisions, contacts and crossings of a
+// settling bed.)
+TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutThePairShortcuts) {
   auto nothing = [](const EventDrivenEngine&) {};
   const auto plain = run_relax_gas(true, false, 1.5, nothing);
   const auto lines = run_relax_gas(true, true, 1.5, nothing);

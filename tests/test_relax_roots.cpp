@@ -534,6 +534,56 @@ TEST(RelaxPair, AccelerationThatReversesBringsThePairBack) {
   }
 }
 
+// relax_pair_separating's promise: where it says the pair separates, the contact search ends
+// with no contact at its first step. Pairs at contact (to 1e-13 .. 1e-3 of it, overlapping by
+// as little, or exactly), separating along a random direction at random angles (from nearly
+// tangential to head-on), under the five families' flights (unequal drag and drive, strong and
+// weak) and horizons of 1e-5 .. 1 s; and the random pairs above. Both answers must be common,
+// and it must answer most pairs that separate clearly faster than their accelerations allow
+// (what it is for: resting contacts of a dense bed that part).
+TEST(RelaxPair, SeparatingPairsEndTheSearchAtItsFirstStep) {
+  Rng rng(41);
+  int separating = 0, clear = 0, clear_found = 0, approaching = 0;
+  for (int trial = 0; trial < 40000; ++trial) {
+    PairCase c = random_pair(rng, trial % 5);
+    if (trial % 2 == 0) {
+      // At contact, separating: the relative velocity at an angle to the normal.
+      const Vec3 n = unit(rng);
+      const double offset =
+          trial % 8 == 0 ? 0.0 : (rng.uniform() < 0.5 ? -1.0 : 1.0) * log_uniform(rng, 1e-13, 1e-3);
+      c.dr = c.contact * (1.0 + offset) * n;
+      const Vec3 u = c.va - c.vb;
+      const Vec3 tangent = (u - u.dot(n) * n).normalized();
+      const double angle = rng.uniform(-1.5, 1.5);  // from the normal, rad
+      c.vb = c.va - u.norm() * (std::cos(angle) * n + std::sin(angle) * tangent);
+    }
+    const bool says = relax_pair_separating(c.dr, c.va, c.fa, c.vb, c.fb, c.horizon);
+    const RelaxContactSearch search =
+        relax_pair_contact_search(c.dr, c.va, c.fa, c.vb, c.fb, c.contact, c.horizon);
+    if (says) {
+      ASSERT_EQ(search.time, kNever) << "trial " << trial << ": a separating pair touches";
+      ASSERT_EQ(search.iterations, 1) << "trial " << trial;
+      ++separating;
+    }
+    approaching += c.dr.dot(c.va - c.vb) < 0.0;
+    // Clear: the normal speed is ten times what the accelerations can take away over the
+    // horizon (|a_a| + |a_b| bounds the relative acceleration).
+    const double slope = c.dr.normalized().dot(c.va - c.vb);
+    const double turn =
+        (c.fa.acceleration(c.va).norm() + c.fb.acceleration(c.vb).norm()) * c.horizon;
+    if (slope > 10.0 * turn) {
+      ++clear;
+      clear_found += says;
+    }
+  }
+  std::printf("separating %d, approaching %d, clearly separating %d (answered %d)\n", separating,
+              approaching, clear, clear_found);
+  EXPECT_GT(separating, 2000);
+  EXPECT_GT(approaching, 10000);
+  EXPECT_GT(clear, 1000);
+  EXPECT_EQ(clear_found, clear) << "a pair that clearly separates was left to the search";
+}
+
 // --- the cylinder ----------------------------------------------------------------------------
 
 // Random spheres inside a vertical tube: anywhere; near the axis (within 1e-6 of reach, or on

@@ -31,11 +31,13 @@ struct EventDrivenOptions {
   /// (from a bound on the speeds in each cell). The events are the same bit for bit either
   /// way: off only to check that (the tests' oracle) or to measure what it saves.
   bool skip_unreachable_cells = true;
-  /// Relax pair predictions first test the straight lines of the two stored states (no
-  /// exponential, no square root, no flight read) and end the pairs that cannot touch by them.
-  /// The events are the same bit for bit either way: off only to check that (the tests'
-  /// oracle) or to measure what it saves.
-  bool stored_line_test = true;
+  /// Relax pair predictions end pairs by two cheap, sound tests before the exact ones: the
+  /// straight lines of the two stored states keep them apart (lines_apart in pair_batch.hpp: no
+  /// exponential, no square root, no flight read), or they separate faster than any
+  /// acceleration can turn them back (relax_pair_separating in core/relax_roots.hpp). The events
+  /// are the same bit for bit either way: off only to check that (the tests' oracle) or to
+  /// measure what it saves.
+  bool relax_pair_shortcuts = true;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.
 #ifdef NDEBUG

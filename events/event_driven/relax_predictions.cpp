@@ -80,6 +80,9 @@ double EventDrivenEngine::relax_pair_time(std::int32_t i, std::int32_t j, double
   const double closest = u2 > 0.0 ? std::clamp(-dr.dot(u) / u2, 0.0, horizon) : 0.0;
   if ((dr + closest * u).squaredNorm() > reach * reach) return kNever;
   if (same_clock && out_of_sweep()) return kNever;
+  // Half the pairs left are in contact (or nearly) and separate: ended without the search.
+  if (options_.relax_pair_shortcuts && relax_pair_separating(dr, va, fa, vb, fb, horizon))
+    return kNever;
   const double s = relax_pair_contact_time(dr, va, fa, vb, fb, contact, horizon);
   return s == kNever ? kNever : t_ref + s;
 }
@@ -151,7 +154,7 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
   // Of the candidates that may reach, three in four are pairs in contact that separate (a dense
   // bed): the straight lines of their stored states end them (lines_apart), before any flight
   // is read or state advanced, four at a time in the batch.
-  const bool lines = options_.stored_line_test;
+  const bool lines = options_.relax_pair_shortcuts;
   query.velocity = a.velocity;
   query.clock = a.clock;
   query.acceleration = motion.acceleration;

@@ -390,9 +390,11 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Relax: bounds on every flight in flights_ (set by bound_flights whenever they change).
   RelaxFlightBounds flight_bounds_;
   /// Relax: the levels (bit l for level l) whose cells hold several particles each where the
-  /// particles are (HierarchicalGrid::list_length_seen above kLongLists), measured at each
-  /// fluid step: their predictions walk deeper into each list without a branch.
+  /// particles are (HierarchicalGrid::list_length_seen above kLongLists), measured at every
+  /// kListsEvery-th fluid step: their predictions walk deeper into each list without a branch.
   std::uint32_t long_lists_ = 0;
+  /// Relax: predict_all calls so far (when the list lengths are measured again; speed only).
+  std::uint64_t lists_measured_ = 0;
   /// Relax: no stored clock is earlier than this (set with the cells' speed bounds by
   /// reset_cell_speeds), s.
   double speed_clock_ = 0;

@@ -22,6 +22,17 @@
 
 namespace carom {
 
+/// A separation's components (dx, dy, dz) mapped to the nearest periodic image in place, as
+/// Domain::minimum_image maps a vector: the scalar tests keep their components apart, as the
+/// batch keeps them in columns.
+inline void nearest_image(const Domain& domain, double& dx, double& dy, double& dz) {
+  Vec3 dr(dx, dy, dz);
+  domain.minimum_image(dr);
+  dx = dr.x();
+  dy = dr.y();
+  dz = dr.z();
+}
+
 /// Contact time of partner b with particle a, both moving ballistically under the same gravity,
 /// each state given at its own clock (s); kImage takes the nearest periodic image. The scalar
 /// reference for PairBatch.
@@ -46,13 +57,7 @@ inline double pair_contact(const Vec3& position_a, const Vec3& velocity_a, doubl
     uy += lag * gravity.y();
     uz += lag * gravity.z();
   }
-  if constexpr (kImage) {
-    Vec3 dr(dx, dy, dz);
-    domain.minimum_image(dr);
-    dx = dr.x();
-    dy = dr.y();
-    dz = dr.z();
-  }
+  if constexpr (kImage) nearest_image(domain, dx, dy, dz);
   return t_ref + sphere_contact_time(Vec3(dx, dy, dz), Vec3(ux, uy, uz), radius_a + radius_b);
 }
 
@@ -193,13 +198,7 @@ inline bool may_reach(const ReachQuery& q, const PairState& b) {
   double dx = q.position.x() - b.position.x();
   double dy = q.position.y() - b.position.y();
   double dz = q.position.z() - b.position.z();
-  if constexpr (kImage) {
-    Vec3 dr(dx, dy, dz);
-    q.domain.minimum_image(dr);
-    dx = dr.x();
-    dy = dr.y();
-    dz = dr.z();
-  }
+  if constexpr (kImage) nearest_image(q.domain, dx, dy, dz);
   const double sweep = q.bounds.reach_bound(b.velocity, q.end - b.clock);
   const double reach = (q.radius + b.radius + q.sweep + sweep) * (1.0 + 1e-12);
   return !(dx * dx + dy * dy + dz * dz > reach * reach);
@@ -226,13 +225,7 @@ inline bool lines_apart(const ReachQuery& q, const PairState& b) {
   double dx = q.position.x() - b.position.x() + dt_a * q.velocity.x() - dt_b * b.velocity.x();
   double dy = q.position.y() - b.position.y() + dt_a * q.velocity.y() - dt_b * b.velocity.y();
   double dz = q.position.z() - b.position.z() + dt_a * q.velocity.z() - dt_b * b.velocity.z();
-  if constexpr (kImage) {
-    Vec3 dr(dx, dy, dz);
-    q.domain.minimum_image(dr);
-    dx = dr.x();
-    dy = dr.y();
-    dz = dr.z();
-  }
+  if constexpr (kImage) nearest_image(q.domain, dx, dy, dz);
   const double ux = q.velocity.x() - b.velocity.x();
   const double uy = q.velocity.y() - b.velocity.y();
   const double uz = q.velocity.z() - b.velocity.z();

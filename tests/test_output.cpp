@@ -4,6 +4,7 @@
 // one continues bit for bit as the run that was never interrupted. Everything else here checks
 // that what is written is what was simulated (bit for bit where it is a copy of the state).
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <bit>
@@ -465,6 +466,42 @@ TEST_F(OutputTest, AppendContinuesTheTimeSeries) {
   EXPECT_GT(series.read<double>("dissipated").back(), 0.0) << "e = 0.9 dissipates";
   EXPECT_THROW(read_checkpoint(file("run.h5")), std::runtime_error)
       << "a run file is no checkpoint";
+}
+
+// Rows wait in memory until they are written together (RunFile::kRowWait). A writer killed
+// without a chance to clean up (here: a child process that ends with _exit, no destructor) leaves
+// a readable file with every row written before the kill and none of those still waiting; with a
+// row wait of 0 every row is written at once.
+TEST_F(OutputTest, RowsWrittenSurviveAKilledWriterAndWaitingRowsDoNot) {
+  EventDrivenEngine sim(make_granular_gas(small_gas()));
+  auto killed_writer = [&](const std::string& path, double row_wait) {
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      RunFile run(path, test_info(), sim.system());
+      run.set_row_wait(row_wait);
+      sim.run_until(0.5);
+      run.append_sample(sim);
+      run.write_waiting_rows();
+      for (double t : {1.0, 1.5}) {
+        sim.run_until(t);
+        run.append_sample(sim);
+      }
+      _exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  };
+  killed_writer(file("waiting.h5"), 3600.0);  // an hour: the child runs for milliseconds
+  killed_writer(file("at_once.h5"), 0.0);
+  const h5::File waiting = h5::File::open(file("waiting.h5"), false);
+  EXPECT_EQ(waiting.open_group("timeseries").read<double>("time"), (std::vector<double>{0.5}));
+  EXPECT_EQ(waiting.open_group("timeseries").read<std::uint64_t>("events").size(), 1u);
+  const h5::File at_once = h5::File::open(file("at_once.h5"), false);
+  EXPECT_EQ(at_once.open_group("timeseries").read<double>("time"),
+            (std::vector<double>{0.5, 1.0, 1.5}));
+  EXPECT_EQ(at_once.open_group("timeseries").read<std::uint64_t>("events").size(), 3u);
 }
 
 // `carom resume` restarts from the last checkpoint, which may be older than the last rows and

@@ -86,7 +86,11 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
     if (flow != nullptr) append_flow_series(*flow, sim, row);
     file.append_sample(sim, gas, row);
   };
-  auto checkpoint = [&] { write_checkpoint(checkpoint_path, sim, info, gas, flow); };
+  // The rows up to a checkpoint are in the run file before it (a resumed run reads them back).
+  auto checkpoint = [&] {
+    file.write_waiting_rows();
+    write_checkpoint(checkpoint_path, sim, info, gas, flow);
+  };
 
   Schedule snapshots{scene.output.snapshot_every}, samples{scene.output.sample_every},
       checkpoints{scene.output.checkpoint_every};
@@ -117,6 +121,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   // dynamics: run_until's end is a global event that touches no particle.
   double chunk = (end_time - sim.time()) / 1000.0;
   auto finish = [&](const std::string& status, const std::string& message) {
+    file.write_waiting_rows();
     progress.finish();
     stretch.status = status;
     stretch.message = message;
@@ -156,6 +161,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
         stretch.averages.sample(sim);
         averages.pass(t);
       }
+      file.write_overdue_rows();
       progress.update(t, sim.statistics().events, sim.statistics().collisions());
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
       if (chunk_limited)

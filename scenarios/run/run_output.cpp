@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -114,10 +116,35 @@ struct RunFile::Impl {
   Eigen::Matrix3d previous_kinetic_stress = Eigen::Matrix3d::Zero();
   bool has_previous = false;
 
-  // The time series' datasets, opened once (a sample appends to some twenty of them); an empty
-  // entry is a column this file does not have (one written before the column existed).
-  std::map<std::string, std::optional<h5::Dataset>, std::less<>> columns;
-  const h5::Dataset* column(const std::string& name);
+  // The time series' datasets, opened once (a sample appends to some twenty of them), each with
+  // its rows that wait to be written; an empty dataset is a column this file does not have (one
+  // written before the column existed).
+  struct Column {
+    std::optional<h5::Dataset> set;
+    std::vector<double> doubles;          ///< Waiting values of a floating-point column.
+    std::vector<std::uint64_t> counters;  ///< Waiting values of a counter column.
+    template <class T>
+    void hold(const std::vector<T>& values) {
+      auto& waiting = [&]() -> std::vector<T>& {
+        if constexpr (std::is_same_v<T, double>)
+          return doubles;
+        else
+          return counters;
+      }();
+      waiting.insert(waiting.end(), values.begin(), values.end());
+    }
+  };
+  std::map<std::string, Column, std::less<>> columns;
+  /// The column `name`, or nullptr when the file has none.
+  Column* column(const std::string& name);
+  /// Rows of the time series, written and waiting.
+  std::size_t rows();
+  // Rows wait in memory (RunFile::write_waiting_rows); the first of them since this instant.
+  std::size_t waiting_rows = 0;
+  std::chrono::steady_clock::time_point waiting_since;
+  double row_wait = RunFile::kRowWait;
+  /// Writes the waiting rows, then flushes the file.
+  void flush();
 
   void write_xdmf() const;
   void recover_previous_sample();
@@ -239,7 +266,34 @@ std::unique_ptr<RunFile> RunFile::append(const std::string& path) {
 }
 
 RunFile::RunFile() = default;
-RunFile::~RunFile() = default;
+
+RunFile::~RunFile() {
+  // The run loop writes the rows before it returns; here only for a run ended otherwise.
+  if (!impl_ || impl_->waiting_rows == 0) return;
+  try {
+    impl_->flush();
+  } catch (const std::exception& e) {
+    std::cerr << "carom: " << impl_->path << ": the last " << impl_->waiting_rows
+              << " rows of the time series could not be written: " << e.what() << "\n";
+  }
+}
+
+void RunFile::write_waiting_rows() {
+  if (impl_->waiting_rows > 0) impl_->flush();
+}
+
+void RunFile::write_overdue_rows() {
+  const Impl& d = *impl_;
+  if (d.waiting_rows > 0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - d.waiting_since).count() >=
+          d.row_wait)
+    write_waiting_rows();
+}
+
+void RunFile::set_row_wait(double seconds) {
+  impl_->row_wait = seconds;
+  write_overdue_rows();
+}
 
 const std::string& RunFile::path() const {
   return impl_->path;
@@ -261,20 +315,38 @@ void RunFile::Impl::recover_previous_sample() {
   has_previous = true;
 }
 
-const h5::Dataset* RunFile::Impl::column(const std::string& name) {
+RunFile::Impl::Column* RunFile::Impl::column(const std::string& name) {
   auto found = columns.find(name);
   if (found == columns.end()) {
     const h5::Group series = file.open_group("timeseries");
-    std::optional<h5::Dataset> set;
-    if (series.contains(name)) set = series.open_dataset(name);
-    found = columns.emplace(name, std::move(set)).first;
+    Column column;
+    if (series.contains(name)) column.set = series.open_dataset(name);
+    found = columns.emplace(name, std::move(column)).first;
   }
-  return found->second ? &*found->second : nullptr;
+  return found->second.set ? &found->second : nullptr;
+}
+
+std::size_t RunFile::Impl::rows() {
+  const Column* times = column("time");
+  return times != nullptr ? times->set->size() + times->doubles.size() : 0;
+}
+
+void RunFile::Impl::flush() {
+  for (auto& [name, column] : columns) {
+    if (!column.set) continue;
+    if (!column.doubles.empty()) column.set->append(column.doubles);
+    if (!column.counters.empty()) column.set->append(column.counters);
+    column.doubles.clear();
+    column.counters.clear();
+  }
+  waiting_rows = 0;
+  file.flush();
 }
 
 // A run resumed from a checkpoint older than its last outputs writes them again (bit for bit the
 // same, the run being deterministic): the rows and snapshots from then on are dropped first.
 void RunFile::Impl::drop_samples_from(double time) {
+  flush();
   const h5::Group series = file.open_group("timeseries");
   const std::vector<double> times = series.read<double>("time");
   const auto keep =
@@ -336,7 +408,7 @@ void RunFile::write_snapshot(const CollisionMethod& sim, const GasCoupling* gas)
   }
   write_vertex_cells(d.file, n);
   d.snapshots.push_back({name, sim.time(), n});
-  d.file.flush();
+  d.flush();  // with the rows waiting
   d.write_xdmf();
 }
 
@@ -364,7 +436,7 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
 
   // A run file written before a column existed (resumed with a newer carom) goes on without it.
   auto put = [&](const std::string& name, const auto& values) {
-    if (const h5::Dataset* set = d.column(name)) set->append(values);
+    if (Impl::Column* column = d.column(name)) column->hold(values);
   };
   put("time", std::vector<double>{time});
   put("kinetic_translational", std::vector<double>{energy.translational});
@@ -407,15 +479,15 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
   for (const SeriesColumn& column : extra) {
     if (d.column(column.name) == nullptr) {
       // A series that starts late would not line up with time: only at the first row.
-      const h5::Dataset* times = d.column("time");
-      if (times != nullptr && times->size() > 1)
+      if (d.rows() > 1)
         throw std::logic_error("run file: series " + column.name + " added after the first row");
       d.file.open_group("timeseries").create_extendible<double>(column.name, column.columns);
       d.columns.erase(column.name);
     }
     put(column.name, column.values);
   }
-  d.file.flush();
+  if (d.waiting_rows++ == 0) d.waiting_since = std::chrono::steady_clock::now();
+  write_overdue_rows();
 
   d.previous_time = time;
   d.previous_events = stats.events;

@@ -88,19 +88,6 @@ class SideThread {
   alignas(64) std::thread thread_;
 };
 
-/// Calls body(begin, end, part) for the two halves of [0, n): part 0 = [0, n / 2) on the calling
-/// thread and part 1 = [n / 2, n) on `side` at the same time (run_beside), or both here, one
-/// after the other, when `side` is null. The halves must not write anything the other reads.
-template <class Body>
-void for_halves(SideThread* side, std::size_t n, Body&& body) {
-  if (side == nullptr) {
-    body(std::size_t{0}, n / 2, 0);
-    body(n / 2, n, 1);
-    return;
-  }
-  side->run_beside([&] { body(n / 2, n, 1); }, [&] { body(std::size_t{0}, n / 2, 0); });
-}
-
 /// Calls body(begin, end) for consecutive pieces of [0, n) of at most `chunk` indices each, which
 /// the calling thread and `side` take in turn from a shared counter as each finishes its last,
 /// so that neither waits long for the other when some indices cost more than others (halves

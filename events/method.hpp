@@ -82,7 +82,7 @@ struct GlobalStep {
   std::vector<RelaxFlight>& flights;
   /// Particles to remove and add (the flow step); the action must not resize `particles` itself.
   ParticleChange change{};
-  /// A second thread for the action's per-particle loops (for_chunks, for_halves), or null.
+  /// A second thread for the action's per-particle loops (for_chunks), or null.
   /// The action's results must not depend on it.
   SideThread* side = nullptr;
 };

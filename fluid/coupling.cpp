@@ -174,10 +174,12 @@ void GasCoupling::step(double t, const ParticleStore& particles, std::vector<Rel
 
 void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side) {
   const std::size_t n = particles.size(), cells = porosity_.size();
-  // Each sphere's cell shares (the geometry: most of the cost) in two halves, in order...
+  // Each sphere's cell shares (the geometry: most of the cost) in pieces taken in turn by this
+  // and the side thread, each piece's in its own list...
   share_count_.resize(n);
-  for_halves(side, n, [&](std::size_t begin, std::size_t end, int part) {
-    std::vector<CellShare>& shares = half_shares_[part].shares;
+  chunk_shares_.resize((n + kParticleChunk - 1) / kParticleChunk);
+  for_chunks(side, n, kParticleChunk, [&](std::size_t begin, std::size_t end) {
+    std::vector<CellShare>& shares = chunk_shares_[begin / kParticleChunk].shares;
     shares.clear();
     for (std::size_t i = begin; i < end; ++i) {
       const std::size_t before = shares.size();
@@ -189,9 +191,9 @@ void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side
   weight_start_.assign(n + 1, 0);
   weights_.clear();
   std::vector<double> solid(cells, 0.0), d3(cells, 0.0), d2(cells, 0.0);
-  const CellShare* share = half_shares_[0].shares.data();
+  const CellShare* share = nullptr;
   for (std::size_t i = 0; i < n; ++i) {
-    if (i == n / 2) share = half_shares_[1].shares.data();
+    if (i % kParticleChunk == 0) share = chunk_shares_[i / kParticleChunk].shares.data();
     weight_start_[i] = weights_.size();
     const double a = particles.radius[i];
     const double volume = 4.0 / 3.0 * std::numbers::pi * a * a * a;

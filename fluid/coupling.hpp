@@ -58,8 +58,8 @@ class GasCoupling {
   /// Maps the particles (porosity) without advancing the gas: the state at t = 0 for outputs.
   void prepare(const ParticleStore& particles);
   /// The fluid step at time t: particles as of t; sets flights[i] for [t, t + dt).
-  /// Its per-particle parts (the spheres' cell shares in two halves; drag coefficients and
-  /// interpolation in pieces taken in turn) run on this and the `side` thread when one is given;
+  /// Its per-particle parts (the spheres' cell shares, drag coefficients and interpolation, in
+  /// pieces taken in turn) run on this and the `side` thread when one is given;
   /// every sum over particles is taken in particle order afterwards, so the results are the same
   /// bit for bit.
   void step(double t, const ParticleStore& particles, std::vector<RelaxFlight>& flights,
@@ -148,13 +148,13 @@ class GasCoupling {
   std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
   std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).
   // Per-particle scratch of a step, filled on two threads (see step).
-  /// One half's cell shares in order, on a cache line of its own: the two threads append to
-  /// theirs at once, and each append writes the vector's end (on one line, the two threads'
-  /// appends moved it between the cores at every sphere).
-  struct alignas(64) HalfShares {
+  /// One piece's cell shares in order (map_particles), on a cache line of its own: the two
+  /// threads append to theirs at once, and each append writes the vector's end (two pieces'
+  /// vectors on one line moved it between the cores at every sphere).
+  struct alignas(64) ChunkShares {
     std::vector<CellShare> shares;
   };
-  std::array<HalfShares, 2> half_shares_;
+  std::vector<ChunkShares> chunk_shares_;
   std::vector<std::uint32_t> share_count_;             ///< Cell shares per particle.
   std::vector<double> particle_drag_;                  ///< K_i, kg/s.
   std::vector<double> particle_porosity_;              ///< eps_i interpolated.

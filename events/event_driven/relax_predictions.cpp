@@ -303,7 +303,7 @@ void EventDrivenEngine::predict_all<RelaxFlights>() {
   ++lists_measured_;
   // Each particle's agenda is its own cache line (Agenda is aligned to 64 bytes), and the
   // plans read only what no plan writes: any split gives the same agendas.
-  auto plan_range = [this](std::size_t begin, std::size_t end, int = 0) {
+  auto plan_range = [this](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) plan<RelaxFlights>(static_cast<std::int32_t>(k));
   };
   WorkerPool* workers = threads_ > 2 && horizon_ != kNever ? shared_workers() : nullptr;

@@ -123,21 +123,17 @@ struct RunFile::Impl {
     std::optional<h5::Dataset> set;
     std::vector<double> doubles;          ///< Waiting values of a floating-point column.
     std::vector<std::uint64_t> counters;  ///< Waiting values of a counter column.
-    template <class T>
-    void hold(const std::vector<T>& values) {
-      auto& waiting = [&]() -> std::vector<T>& {
-        if constexpr (std::is_same_v<T, double>)
-          return doubles;
-        else
-          return counters;
-      }();
-      waiting.insert(waiting.end(), values.begin(), values.end());
+    void hold(const std::vector<double>& values) {
+      doubles.insert(doubles.end(), values.begin(), values.end());
+    }
+    void hold(const std::vector<std::uint64_t>& values) {
+      counters.insert(counters.end(), values.begin(), values.end());
     }
   };
   std::map<std::string, Column, std::less<>> columns;
   /// The column `name`, or nullptr when the file has none.
   Column* column(const std::string& name);
-  /// Rows of the time series, written and waiting.
+  /// Rows of the time series, written and waiting (the one being put included).
   std::size_t rows();
   // Rows wait in memory (RunFile::write_waiting_rows); the first of them since this instant.
   std::size_t waiting_rows = 0;

@@ -122,9 +122,11 @@ void GasCoupling::step(double t, const ParticleStore& particles, std::vector<Rel
   const bool two_way = settings_.coupling == CouplingLevel::TwoWay;
   if (two_way) {
     // Drag coefficients at the slip seen now (gas of the last step), mapped with the weights:
-    // each particle's in pieces shared with the side thread, their sums in particle order.
+    // each particle's in pieces shared with the side thread, their sums in particle order. The
+    // factors of the porosity alone are kept for set_flights, which reads the same porosity.
     const std::size_t n = particles.size();
     particle_drag_.resize(n);
+    particle_factors_.resize(n);
     take_cell_fields(false);
     for_chunks(side, n, kParticleChunk, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
@@ -134,7 +136,9 @@ void GasCoupling::step(double t, const ParticleStore& particles, std::vector<Rel
           u += weights_[w].second * cell_gas_velocity_[weights_[w].first];
           eps += weights_[w].second * porosity_[weights_[w].first];
         }
-        particle_drag_[i] = drag_coefficient(i, particles, eps, (u - particles.velocity[i]).norm());
+        DragInput input = drag_input(i, particles, eps, (u - particles.velocity[i]).norm());
+        particle_factors_[i] = closure_->porosity_factors(input);
+        particle_drag_[i] = closure_->drag_coefficient(input, particle_factors_[i]);
       }
     });
     std::vector<double> k_sum(cells, 0.0);
@@ -167,7 +171,7 @@ void GasCoupling::step(double t, const ParticleStore& particles, std::vector<Rel
   times_.solve += seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  set_flights(particles, flights, side);
+  set_flights(particles, flights, side, two_way);
   times_.interpolation += seconds_since(start);
   ++times_.steps;
 }
@@ -190,7 +194,9 @@ void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side
   // ... then the weights and the cells' sums in particle order, as one thread would.
   weight_start_.assign(n + 1, 0);
   weights_.clear();
-  std::vector<double> solid(cells, 0.0), d3(cells, 0.0), d2(cells, 0.0);
+  // The Sauter sums only for the closures that read the mean diameter.
+  const bool sauter = closure_->reads_sauter_diameter();
+  std::vector<double> solid(cells, 0.0), d3(sauter ? cells : 0, 0.0), d2(sauter ? cells : 0, 0.0);
   const CellShare* share = nullptr;
   for (std::size_t i = 0; i < n; ++i) {
     if (i % kParticleChunk == 0) share = chunk_shares_[i / kParticleChunk].shares.data();
@@ -200,6 +206,7 @@ void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side
     for (const CellShare* end = share + share_count_[i]; share != end; ++share) {
       weights_.emplace_back(share->cell, share->fraction);
       solid[share->cell] += share->fraction * volume;
+      if (!sauter) continue;
       d3[share->cell] += share->fraction * 8.0 * a * a * a;
       d2[share->cell] += share->fraction * 4.0 * a * a;
     }
@@ -209,12 +216,12 @@ void GasCoupling::map_particles(const ParticleStore& particles, SideThread* side
     porosity_[c] = open_volume_[c] > 0.0
                        ? std::max(settings_.min_porosity, 1.0 - solid[c] / open_volume_[c])
                        : 1.0;
-    sauter_[c] = d2[c] > 0.0 ? d3[c] / d2[c] : 0.0;
+    if (sauter) sauter_[c] = d2[c] > 0.0 ? d3[c] / d2[c] : 0.0;
   }
 }
 
-double GasCoupling::drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
-                                     double slip) const {
+DragInput GasCoupling::drag_input(std::size_t i, const ParticleStore& particles, double eps,
+                                  double slip) const {
   DragInput input{};
   input.porosity = eps;
   input.slip = slip;
@@ -224,10 +231,11 @@ double GasCoupling::drag_coefficient(std::size_t i, const ParticleStore& particl
   input.particle_density = species_density_[particles.species[i]];
   // Polydisperse closures: the particle's size relative to the local Sauter mean diameter.
   double sauter = 0.0;
-  for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w)
-    sauter += weights_[w].second * sauter_[weights_[w].first];
+  if (closure_->reads_sauter_diameter())
+    for (std::size_t w = weight_start_[i]; w < weight_start_[i + 1]; ++w)
+      sauter += weights_[w].second * sauter_[weights_[w].first];
   input.sauter_diameter = sauter > 0.0 ? sauter : input.diameter;
-  return closure_->drag_coefficient(input);
+  return input;
 }
 
 void GasCoupling::take_cell_fields(bool gradient) {
@@ -242,7 +250,7 @@ void GasCoupling::take_cell_fields(bool gradient) {
 }
 
 void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights,
-                              SideThread* side) {
+                              SideThread* side, bool factors_kept) {
   const std::size_t n = particles.size();
   flights.resize(n);
   particle_gas_velocity_.resize(n);
@@ -264,16 +272,22 @@ void GasCoupling::set_flights(const ParticleStore& particles, std::vector<RelaxF
       }
       const Vec3& v = particles.velocity[i];
       const double slip = (u - v).norm();
-      const double k = drag_coefficient(i, particles, eps, slip);
+      DragInput input = drag_input(i, particles, eps, slip);
+      // The factors step() kept are those of this porosity (the same sums of the same weights);
+      // the comparison makes that a check rather than an assumption.
+      const PorosityFactors factors = factors_kept && particle_factors_[i].porosity == eps
+                                          ? particle_factors_[i]
+                                          : closure_->porosity_factors(input);
+      const double k = closure_->drag_coefficient(input, factors);
       const double rate = k / particles.mass[i];
       if (keep_longitudinal_rates_) {
         // d(K s)/ds by a forward difference over a relative slip change of 1e-6 (the drag laws
         // are smooth there; at zero slip the derivative is K itself).
         const double ds = 1e-6 * slip;
+        input.slip = slip + ds;
         const double tangent =
-            slip > 0.0
-                ? (drag_coefficient(i, particles, eps, slip + ds) * (slip + ds) - k * slip) / ds
-                : k;
+            slip > 0.0 ? (closure_->drag_coefficient(input, factors) * (slip + ds) - k * slip) / ds
+                       : k;
         longitudinal_rates_[i] = std::max(rate, tangent / particles.mass[i]);
       }
       const std::uint32_t s = particles.species[i];

@@ -127,11 +127,12 @@ class GasCoupling {
   void map_particles(const ParticleStore& particles, SideThread* side = nullptr);
   /// Side s's jet profile at time t (the ramp applied), m/s.
   std::vector<double> scaled_profile(int side, double t) const;
+  /// `factors_kept`: step() left each particle's porosity factors in particle_factors_.
   void set_flights(const ParticleStore& particles, std::vector<RelaxFlight>& flights,
-                   SideThread* side);
-  /// K_i (kg/s) of particle i from the closure at slip speed `slip` and porosity eps.
-  double drag_coefficient(std::size_t i, const ParticleStore& particles, double eps,
-                          double slip) const;
+                   SideThread* side, bool factors_kept = false);
+  /// What the closure needs of particle i at slip speed `slip` and porosity eps.
+  DragInput drag_input(std::size_t i, const ParticleStore& particles, double eps,
+                       double slip) const;
 
   GasSettings settings_;
   Domain domain_;
@@ -157,6 +158,7 @@ class GasCoupling {
   std::vector<ChunkShares> chunk_shares_;
   std::vector<std::uint32_t> share_count_;             ///< Cell shares per particle.
   std::vector<double> particle_drag_;                  ///< K_i, kg/s.
+  std::vector<PorosityFactors> particle_factors_;      ///< The closure's factors of eps_i.
   std::vector<double> particle_porosity_;              ///< eps_i interpolated.
   std::vector<Vec3> particle_pressure_gradient_;       ///< grad p_i interpolated, Pa/m.
   std::vector<Vec3> species_gas_velocity_;       ///< Sum of u_i per species (last step), m/s.

@@ -1,6 +1,7 @@
 #include "drag.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -71,11 +72,63 @@ double schiller_naumann_cd(double reynolds) {
   return 24.0 / reynolds * schiller_naumann_factor(reynolds);
 }
 
+namespace {
+// Each closure with factors of the porosity alone, as K from those factors (PorosityFactors):
+// the free functions below and DragClosure take K through these, so both give the same bits.
+
+/// Richardson-Zaki: the slip's factor eps^-n and the prefactor eps^(2 - n).
+double schiller_naumann_with(const DragInput& in, double slip_factor, double prefactor) {
+  const double scaled_reynolds = slip_factor * reynolds_number(in);
+  return stokes_coefficient(in) * prefactor * schiller_naumann_factor(scaled_reynolds);
+}
+
+/// Wen-Yu's voidage function eps^-2.65.
+double wen_yu_voidage(double porosity) {
+  return std::pow(porosity, -2.65);
+}
+
+double wen_yu_with(const DragInput& in, double voidage) {
+  return stokes_coefficient(in) * voidage * schiller_naumann_factor(reynolds_number(in));
+}
+
+double gidaspow_with(const DragInput& in, double voidage) {
+  return in.porosity < 0.8 ? ergun_drag(in) : wen_yu_with(in, voidage);
+}
+
+double gidaspow_blend_with(const DragInput& in, double weight, double voidage) {
+  return (1.0 - weight) * ergun_drag(in) + weight * wen_yu_with(in, voidage);
+}
+
+/// Beetstra's viscous part 10 phi / eps^2 + eps^2 (1 + 1.5 sqrt(phi)) (eps = 1 - phi).
+double beetstra_viscous(double solid_fraction) {
+  const double phi = solid_fraction, eps = 1.0 - phi;
+  return 10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * std::sqrt(phi));
+}
+
+/// Beetstra's F from its viscous part and 10^(3 phi).
+double beetstra_f_with(double solid_fraction, double reynolds, double viscous, double ten_power) {
+  const double phi = solid_fraction, eps = 1.0 - phi;
+  if (reynolds <= 0.0) return viscous;
+  // Inertial part, written so that Re -> 0 gives 0 without inf / inf.
+  const double numerator =
+      reynolds / eps + 3.0 * phi * eps * reynolds + 8.4 * std::pow(reynolds, 0.657);
+  const double denominator = 1.0 + ten_power * std::pow(reynolds, -0.5 * (1.0 + 4.0 * phi));
+  return viscous + 0.413 / (24.0 * eps * eps) * numerator / denominator;
+}
+
+double beetstra_with(const DragInput& in, double viscous, double ten_power) {
+  const double mean_d = in.sauter_diameter > 0.0 ? in.sauter_diameter : in.diameter;
+  const double y = in.diameter / mean_d;
+  const double eps = in.porosity;
+  const double mean_reynolds = eps * in.gas_density * mean_d * in.slip / in.gas_viscosity;
+  return stokes_coefficient(in) * eps * y *
+         beetstra_f_with(1.0 - eps, mean_reynolds, viscous, ten_power);
+}
+}  // namespace
+
 double schiller_naumann_drag(const DragInput& in, double exponent_n) {
   const double eps = in.porosity;
-  const double scaled_reynolds = std::pow(eps, -exponent_n) * reynolds_number(in);
-  return stokes_coefficient(in) * std::pow(eps, 2.0 - exponent_n) *
-         schiller_naumann_factor(scaled_reynolds);
+  return schiller_naumann_with(in, std::pow(eps, -exponent_n), std::pow(eps, 2.0 - exponent_n));
 }
 
 double ergun_drag(const DragInput& in) {
@@ -85,12 +138,11 @@ double ergun_drag(const DragInput& in) {
 }
 
 double wen_yu_drag(const DragInput& in) {
-  return stokes_coefficient(in) * std::pow(in.porosity, -2.65) *
-         schiller_naumann_factor(reynolds_number(in));
+  return wen_yu_with(in, wen_yu_voidage(in.porosity));
 }
 
 double gidaspow_drag(const DragInput& in) {
-  return in.porosity < 0.8 ? ergun_drag(in) : wen_yu_drag(in);
+  return gidaspow_with(in, in.porosity < 0.8 ? 0.0 : wen_yu_voidage(in.porosity));
 }
 
 double gidaspow_blend_weight(double porosity) {
@@ -98,21 +150,14 @@ double gidaspow_blend_weight(double porosity) {
 }
 
 double gidaspow_blend_drag(const DragInput& in) {
-  const double phi = gidaspow_blend_weight(in.porosity);
-  return (1.0 - phi) * ergun_drag(in) + phi * wen_yu_drag(in);
+  return gidaspow_blend_with(in, gidaspow_blend_weight(in.porosity), wen_yu_voidage(in.porosity));
 }
 
 double beetstra_monodisperse_f(double solid_fraction, double reynolds) {
-  const double phi = solid_fraction, eps = 1.0 - phi;
-  // Low-Re part (van der Hoef et al. 2005 in the Beetstra normalisation, eq. 16 first terms).
-  const double viscous = 10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * std::sqrt(phi));
-  if (reynolds <= 0.0) return viscous;
-  // Inertial part, written so that Re -> 0 gives 0 without inf / inf.
-  const double numerator =
-      reynolds / eps + 3.0 * phi * eps * reynolds + 8.4 * std::pow(reynolds, 0.657);
-  const double denominator =
-      1.0 + std::pow(10.0, 3.0 * phi) * std::pow(reynolds, -0.5 * (1.0 + 4.0 * phi));
-  return viscous + 0.413 / (24.0 * eps * eps) * numerator / denominator;
+  // Low-Re part (van der Hoef et al. 2005 in the Beetstra normalisation, eq. 16 first terms),
+  // then the inertial part.
+  return beetstra_f_with(solid_fraction, reynolds, beetstra_viscous(solid_fraction),
+                         std::pow(10.0, 3.0 * solid_fraction));
 }
 
 // Polydisperse Beetstra in model A. Beetstra et al. (2007, with the erratum AIChE J. 53:3020)
@@ -127,11 +172,8 @@ double beetstra_monodisperse_f(double solid_fraction, double reynolds) {
 // in MFiX's model-A implementation; with it the law would not reduce to the monodisperse
 // closure at y = 1 (it gives 1 + 0.064 eps there).
 double beetstra_drag(const DragInput& in) {
-  const double mean_d = in.sauter_diameter > 0.0 ? in.sauter_diameter : in.diameter;
-  const double y = in.diameter / mean_d;
-  const double eps = in.porosity;
-  const double mean_reynolds = eps * in.gas_density * mean_d * in.slip / in.gas_viscosity;
-  return stokes_coefficient(in) * eps * y * beetstra_monodisperse_f(1.0 - eps, mean_reynolds);
+  const double phi = 1.0 - in.porosity;
+  return beetstra_with(in, beetstra_viscous(phi), std::pow(10.0, 3.0 * phi));
 }
 
 double di_felice_exponent(double reynolds) {
@@ -206,39 +248,77 @@ DragClosure::DragClosure(DragClosureKind kind, double fluidization_porosity, dou
                                 " must lie strictly between 0 and 1 (typically 0.4 to 0.5)");
 }
 
+double DragClosure::richardson_zaki_exponent(const DragInput& in) const {
+  // n depends only on the particle and gas properties: remember the last one per thread (a
+  // Newton solve for Re_t costs ~0.3 us; consecutive particles usually share species).
+  struct Memo {
+    double diameter = -1, particle_density = 0, gas_density = 0, gas_viscosity = 0;
+    double fluidization_porosity = 0, gravity = 0, exponent = 0;
+  };
+  thread_local Memo memo;
+  if (memo.diameter != in.diameter || memo.particle_density != in.particle_density ||
+      memo.gas_density != in.gas_density || memo.gas_viscosity != in.gas_viscosity ||
+      memo.fluidization_porosity != fluidization_porosity_ || memo.gravity != gravity_) {
+    memo = Memo{in.diameter,
+                in.particle_density,
+                in.gas_density,
+                in.gas_viscosity,
+                fluidization_porosity_,
+                gravity_,
+                richardson_zaki(in, fluidization_porosity_, gravity_).exponent};
+  }
+  return memo.exponent;
+}
+
 double DragClosure::drag_coefficient(const DragInput& in) const {
+  return drag_coefficient(in, porosity_factors(in));
+}
+
+// What each closure keeps in PorosityFactors (first, second):
+//   schiller_naumann  eps^-n, eps^(2 - n)      gidaspow (eps >= 0.8)  eps^-2.65, 0
+//   wen_yu            eps^-2.65, 0             gidaspow_blend         the weight phi, eps^-2.65
+//   beetstra          its viscous part, 10^(3 (1 - eps))
+// Ergun, Di Felice (its exponent depends on Re) and Morsi-Alexander have none.
+PorosityFactors DragClosure::porosity_factors(const DragInput& in) const {
+  const double eps = in.porosity;
   switch (kind_) {
     case DragClosureKind::SchillerNaumann: {
-      // n depends only on the particle and gas properties: remember the last one per thread
-      // (a Newton solve for Re_t costs ~0.3 us; consecutive particles usually share species).
-      struct Memo {
-        double diameter = -1, particle_density = 0, gas_density = 0, gas_viscosity = 0;
-        double fluidization_porosity = 0, gravity = 0, exponent = 0;
-      };
-      thread_local Memo memo;
-      if (memo.diameter != in.diameter || memo.particle_density != in.particle_density ||
-          memo.gas_density != in.gas_density || memo.gas_viscosity != in.gas_viscosity ||
-          memo.fluidization_porosity != fluidization_porosity_ || memo.gravity != gravity_) {
-        memo = Memo{in.diameter,
-                    in.particle_density,
-                    in.gas_density,
-                    in.gas_viscosity,
-                    fluidization_porosity_,
-                    gravity_,
-                    richardson_zaki(in, fluidization_porosity_, gravity_).exponent};
-      }
-      return schiller_naumann_drag(in, memo.exponent);
+      const double n = richardson_zaki_exponent(in);
+      return {eps, std::pow(eps, -n), std::pow(eps, 2.0 - n)};
     }
+    case DragClosureKind::WenYu:
+      return {eps, wen_yu_voidage(eps), 0.0};
+    case DragClosureKind::Gidaspow:
+      return {eps, eps < 0.8 ? 0.0 : wen_yu_voidage(eps), 0.0};
+    case DragClosureKind::GidaspowBlend:
+      return {eps, gidaspow_blend_weight(eps), wen_yu_voidage(eps)};
+    case DragClosureKind::Beetstra: {
+      const double phi = 1.0 - eps;
+      return {eps, beetstra_viscous(phi), std::pow(10.0, 3.0 * phi)};
+    }
+    case DragClosureKind::Ergun:
+    case DragClosureKind::DiFelice:
+    case DragClosureKind::MorsiAlexander:
+      break;
+  }
+  return {eps, 0.0, 0.0};
+}
+
+double DragClosure::drag_coefficient(const DragInput& in, const PorosityFactors& factors) const {
+  assert(factors.porosity == in.porosity);
+  switch (kind_) {
+    case DragClosureKind::SchillerNaumann:
+      return schiller_naumann_with(in, factors.first, factors.second);
     case DragClosureKind::Ergun:
       return ergun_drag(in);
     case DragClosureKind::WenYu:
-      return wen_yu_drag(in);
+      return wen_yu_with(in, factors.first);
     case DragClosureKind::Gidaspow:
-      return gidaspow_drag(in);
+      return gidaspow_with(in, factors.first);
     case DragClosureKind::GidaspowBlend:
-      return gidaspow_blend_drag(in);
+      return gidaspow_blend_with(in, factors.first, factors.second);
     case DragClosureKind::Beetstra:
-      return beetstra_drag(in);
+      return beetstra_with(in, factors.first, factors.second);
     case DragClosureKind::DiFelice:
       return di_felice_drag(in);
     case DragClosureKind::MorsiAlexander:

@@ -129,6 +129,15 @@ struct RichardsonZaki {
 /// n, U_t and U_mf for a particle (in: diameter, densities, viscosity) and eps_mf.
 RichardsonZaki richardson_zaki(const DragInput& in, double fluidization_porosity, double gravity);
 
+/// The parts of a closure's K that depend on the porosity and the particle alone (the arctan
+/// and the powers of eps): a gas run takes each particle's drag twice a fluid step at the same
+/// porosity (for the gas's share, then for the flights) and computes these once. What `first`
+/// and `second` hold depends on the closure (drag.cpp); closures without such parts leave them 0.
+struct PorosityFactors {
+  double porosity = -1.0;  ///< The eps they were taken at (-1: none).
+  double first = 0.0, second = 0.0;
+};
+
 /// A closure chosen by kind with its parameters: what the coupling calls per particle.
 class DragClosure {
  public:
@@ -138,6 +147,13 @@ class DragClosure {
 
   /// K of one particle, kg/s: drag force K (u - v), relaxation time m / K.
   double drag_coefficient(const DragInput& in) const;
+  /// The factors of K that depend on in.porosity and the particle alone (not on the slip).
+  PorosityFactors porosity_factors(const DragInput& in) const;
+  /// K as drag_coefficient(in), bit for bit, from factors that porosity_factors took for the
+  /// same particle at the same porosity (factors.porosity == in.porosity) and any slip.
+  double drag_coefficient(const DragInput& in, const PorosityFactors& factors) const;
+  /// Whether K reads DragInput::sauter_diameter (the polydisperse closures).
+  bool reads_sauter_diameter() const { return kind_ == DragClosureKind::Beetstra; }
   /// beta = K (1 - eps) / V_p, kg/(m^3 s) (d = in.diameter).
   double momentum_exchange(const DragInput& in) const;
   /// Terminal velocity of one sphere in still gas, eps = 1: K U = V_p (rho_p - rho_g) g, m/s.
@@ -150,6 +166,9 @@ class DragClosure {
   double minimum_fluidization_velocity(const DragInput& in, double bed_porosity) const;
 
  private:
+  /// The Richardson-Zaki exponent n of schiller_naumann for the particle of `in`.
+  double richardson_zaki_exponent(const DragInput& in) const;
+
   DragClosureKind kind_;
   double fluidization_porosity_;
   double gravity_;

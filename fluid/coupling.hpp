@@ -144,7 +144,7 @@ class GasCoupling {
   CellLayout layout_;
   std::vector<double> open_volume_;
   std::vector<double> porosity_;
-  std::vector<double> sauter_;  ///< Sauter mean diameter per cell, m.
+  std::vector<double> sauter_;  ///< Sauter mean diameter per cell, m (0: the closure reads none).
   // Per particle, as of the last mapping.
   std::vector<std::size_t> weight_start_;        ///< Particle i's weights: [start[i], start[i+1]).
   std::vector<std::pair<int, double>> weights_;  ///< (cell, fraction of the particle's volume).

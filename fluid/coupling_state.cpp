@@ -12,7 +12,8 @@
 //   previous_porosity        cells             porosity of the last gas step, the old one of the
 //                                               next (absent before the first step)
 //   porosity                 cells             porosity of the last particle mapping
-//   sauter_diameter          cells             Sauter mean diameter of the last mapping, m
+//   sauter_diameter          cells             Sauter mean diameter of the last mapping, m (0
+//                                               where the closure does not read it)
 //   species_count            (S) uint64        particles per species at the last step
 //   species_gas_velocity     (S, 3)            sum over the species' particles of u_i, m/s
 //   species_gas_force        (S, 3)            sum of K_i (u_i - v_i) - V_i grad p_i, N

@@ -86,17 +86,21 @@ void GasSolver::prepare_momentum(int a, const StepInputs& in) {
   }
 }
 
-void GasSolver::assemble_momentum(int a) {
+void GasSolver::clear_momentum(int a) {
+  double* values = work_->momentum[a].valuePtr();
+  std::fill(values, values + work_->momentum[a].nonZeros(), 0.0);
+}
+
+void GasSolver::assemble_momentum(int a, std::size_t begin, std::size_t end) {
   const GasLayout& layout = *layout_;
   gas_detail::GasWorkspace& work = *work_;
   const double rho = gas_.density, alpha = options_.velocity_relaxation;
   double* values = work.momentum[a].valuePtr();
-  std::fill(values, values + work.momentum[a].nonZeros(), 0.0);
   const auto& flux = work.flux;
   const double outlet_low = boundaries_[2 * a].pressure;
   const double outlet_high = boundaries_[2 * a + 1].pressure;
 
-  for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u) {
+  for (std::size_t u = begin; u < end; ++u) {
     const int f = layout.unknown_face[a][u];
     const int left = layout.left[a][f], right = layout.right[a][f];
     const double p_left = left >= 0 ? pressure_[left] : outlet_low;
@@ -135,6 +139,22 @@ void GasSolver::assemble_momentum(int a) {
     work.neighbour_sum[a][u] = neighbour_sum;
     work.rhs[a][static_cast<Eigen::Index>(u)] = source;
   }
+}
+
+void GasSolver::solve_momentum(int a) {
+  const GasLayout& layout = *layout_;
+  gas_detail::GasWorkspace& work = *work_;
+  if (layout.unknown_face[a].empty()) return;
+  // Solve for the increment from the last iterate, so that the relative tolerance of the linear
+  // solve applies to the change (which vanishes as SIMPLE converges).
+  Eigen::VectorXd& x = work.solution[a];
+  for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u)
+    x[u] = velocity_[a][layout.unknown_face[a][u]];
+  work.rhs[a] -= work.momentum[a] * x;
+  work.momentum_solver[a].compute(work.momentum[a]);
+  x += work.momentum_solver[a].solve(work.rhs[a]);
+  for (std::size_t u = 0; u < layout.unknown_face[a].size(); ++u)
+    velocity_[a][layout.unknown_face[a][u]] = x[u];
 }
 
 }  // namespace carom

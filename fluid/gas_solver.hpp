@@ -245,7 +245,13 @@ class GasSolver {
   void set_fixed_faces(const StepInputs& in);
   void compute_fluxes();
   void prepare_momentum(int axis, const StepInputs& in);
-  void assemble_momentum(int axis);
+  /// Zeroes the axis's momentum matrix, which assemble_momentum then fills row by row.
+  void clear_momentum(int axis);
+  /// The momentum equations' rows [begin, end) of the axis's unknowns (each row writes only its
+  /// own entries, right side and diagonal: any split of the rows gives the same matrix).
+  void assemble_momentum(int axis, std::size_t begin, std::size_t end);
+  /// Solves the axis's assembled momentum equations and sets its velocities.
+  void solve_momentum(int axis);
   void assemble_pressure_correction();
   double continuity_imbalance(const StepInputs& in);
   double face_porosity(int axis, int face, std::span<const double> porosity) const;

@@ -121,7 +121,8 @@ void expect_same_bits(const GasCoupling& a, const GasCoupling& b,
 // flight the same bits as one thread's, for 8 steps (with the longitudinal rates kept, which
 // call the closure twice per particle), and for an odd particle count (unequal halves).
 // The per-particle loops go in pieces of 64 particles (kParticleChunk): one piece, several,
-// and a last piece short of 64.
+// and a last piece short of 64. The gas's momentum equations go x here, z beside and y's rows
+// in two halves (a grid of 3 x 2 x 6 cells: every axis has unknowns).
 TEST(CouplingHalves, ASideThreadGivesTheSameStepsBitForBit) {
   SideThread side;
   for (const std::size_t count : {60u, 59u, 300u, 263u}) {

@@ -55,47 +55,90 @@ void span_edges(const CellLayout& layout, bool periodic, int k, double h, double
 }
 }  // namespace
 
-void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic, const Vec3& centre,
-                  double radius, std::vector<CellShare>& shares) {
-  thread_local std::array<AxisSpan, 3> span;
-  thread_local std::vector<double> corner;
+namespace {
+/// The axis along which a sphere spans two cells when it spans one along the others, and every
+/// face beyond it lies at or past its far side (so every node's ball-corner volume but two is 0
+/// exactly: ball_corner_volume's first test); -1 otherwise.
+int across_one_face(const std::array<AxisSpan, 3>& span, double radius) {
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (span[k].count == 2 && axis < 0)
+      axis = k;
+    else if (span[k].count != 1)
+      return -1;
+  }
+  if (axis < 0) return -1;
+  for (int k = 0; k < 3; ++k)
+    if (span[k].edges.back() < radius) return -1;
+  return axis;
+}
+
+/// The cells a sphere spans along each axis (span_cells), and whether that is one cell.
+bool spans_one_cell(const CellLayout& layout, const std::array<bool, 3>& periodic,
+                    const Vec3& centre, double radius, std::array<AxisSpan, 3>& span) {
   const Vec3 h = layout.cell_size();
   for (int k = 0; k < 3; ++k) span_cells(layout, periodic[k], k, h[k], centre[k], radius, span[k]);
-  const int nx = layout.cells[0], ny = layout.cells[1], nz = layout.cells[2];
-  auto cell_index = [&](int p, int q, int s) {
-    return layout.index(wrap(span[0].first + p, nx), wrap(span[1].first + q, ny),
-                        wrap(span[2].first + s, nz));
-  };
-  const int mx = span[0].count, my = span[1].count, mz = span[2].count;
-  if ((mx == 1 && my == 1 && mz == 1) || radius <= 0.0) {
-    shares.push_back({cell_index(0, 0, 0), 1.0});
-    return;
-  }
+  return (span[0].count == 1 && span[1].count == 1 && span[2].count == 1) || radius <= 0.0;
+}
+
+/// The index of the cell at (p, q, s) from the first cell the sphere spans, wrapped.
+int spanned_cell(const CellLayout& layout, const std::array<AxisSpan, 3>& span, int p, int q,
+                 int s) {
+  return layout.index(wrap(span[0].first + p, layout.cells[0]),
+                      wrap(span[1].first + q, layout.cells[1]),
+                      wrap(span[2].first + s, layout.cells[2]));
+}
+
+/// The shares of a sphere that spans more than one cell, with the shortcut for a sphere across
+/// one face (`shortcut`) or by every node.
+void split_spanning(const CellLayout& layout, const std::array<bool, 3>& periodic,
+                    const Vec3& centre, double radius, std::array<AxisSpan, 3>& span,
+                    std::vector<CellShare>& shares, bool shortcut) {
+  thread_local std::vector<double> corner;
+  const Vec3 h = layout.cell_size();
   for (int k = 0; k < 3; ++k) span_edges(layout, periodic[k], k, h[k], centre[k], radius, span[k]);
-  // Ball-corner volumes at the grid nodes; each cell's volume by inclusion-exclusion.
-  const int sx = mx + 1, sy = my + 1;
-  corner.resize(static_cast<std::size_t>(sx) * sy * (mz + 1));
-  for (int s = 0; s <= mz; ++s)
-    for (int q = 0; q <= my; ++q)
-      for (int p = 0; p <= mx; ++p)
-        corner[p + sx * (q + sy * s)] =
-            ball_corner_volume(span[0].edges[p], span[1].edges[q], span[2].edges[s], radius);
-  auto at = [&](int p, int q, int s) { return corner[p + sx * (q + sy * s)]; };
+  const int mx = span[0].count, my = span[1].count, mz = span[2].count;
   const std::size_t start = shares.size();
   double total = 0.0;
-  for (int s = 0; s < mz; ++s)
-    for (int q = 0; q < my; ++q)
-      for (int p = 0; p < mx; ++p) {
-        const double volume = at(p, q, s) - at(p + 1, q, s) - at(p, q + 1, s) - at(p, q, s + 1) +
-                              at(p + 1, q + 1, s) + at(p + 1, q, s + 1) + at(p, q + 1, s + 1) -
-                              at(p + 1, q + 1, s + 1);
-        if (volume <= 0.0) continue;
-        shares.push_back({cell_index(p, q, s), volume});
-        total += volume;
-      }
+  auto add = [&](int p, int q, int s, double volume) {
+    if (volume <= 0.0) return;
+    shares.push_back({spanned_cell(layout, span, p, q, s), volume});
+    total += volume;
+  };
+  if (const int k = shortcut ? across_one_face(span, radius) : -1; k >= 0) {
+    // A sphere across one face (the commonest split): the two nodes on the near faces of the
+    // other axes. Of the eight terms below the others are +0 exactly, so the two volumes are
+    // the same bits: near - middle for the first cell, middle for the second.
+    std::array<double, 3> node{span[0].edges[0], span[1].edges[0], span[2].edges[0]};
+    const double near = ball_corner_volume(node[0], node[1], node[2], radius);
+    node[k] = span[k].edges[1];
+    const double middle = ball_corner_volume(node[0], node[1], node[2], radius);
+    std::array<int, 3> second{0, 0, 0};
+    second[k] = 1;
+    add(0, 0, 0, near - middle);
+    add(second[0], second[1], second[2], middle);
+  } else {
+    // Ball-corner volumes at the grid nodes; each cell's volume by inclusion-exclusion.
+    const int sx = mx + 1, sy = my + 1;
+    corner.resize(static_cast<std::size_t>(sx) * sy * (mz + 1));
+    for (int s = 0; s <= mz; ++s)
+      for (int q = 0; q <= my; ++q)
+        for (int p = 0; p <= mx; ++p)
+          corner[p + sx * (q + sy * s)] =
+              ball_corner_volume(span[0].edges[p], span[1].edges[q], span[2].edges[s], radius);
+    auto at = [&](int p, int q, int s) { return corner[p + sx * (q + sy * s)]; };
+    for (int s = 0; s < mz; ++s)
+      for (int q = 0; q < my; ++q)
+        for (int p = 0; p < mx; ++p)
+          add(p, q, s,
+              at(p, q, s) - at(p + 1, q, s) - at(p, q + 1, s) - at(p, q, s + 1) +
+                  at(p + 1, q + 1, s) + at(p + 1, q, s + 1) + at(p, q + 1, s + 1) -
+                  at(p + 1, q + 1, s + 1));
+  }
   for (std::size_t i = start; i < shares.size(); ++i) shares[i].fraction /= total;
   // A sphere wider than a periodic box overlaps some cells through several images: merge them.
-  if ((periodic[0] && mx > nx) || (periodic[1] && my > ny) || (periodic[2] && mz > nz)) {
+  const std::array<int, 3>& n = layout.cells;
+  if ((periodic[0] && mx > n[0]) || (periodic[1] && my > n[1]) || (periodic[2] && mz > n[2])) {
     std::sort(shares.begin() + start, shares.end(),
               [](const CellShare& a, const CellShare& b) { return a.cell < b.cell; });
     std::size_t out = start;
@@ -107,6 +150,26 @@ void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
     }
     shares.resize(out);
   }
+}
+}  // namespace
+
+void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic, const Vec3& centre,
+                  double radius, std::vector<CellShare>& shares) {
+  thread_local std::array<AxisSpan, 3> span;
+  if (spans_one_cell(layout, periodic, centre, radius, span))
+    shares.push_back({spanned_cell(layout, span, 0, 0, 0), 1.0});
+  else
+    split_spanning(layout, periodic, centre, radius, span, shares, true);
+}
+
+void detail::split_sphere_by_corners(const CellLayout& layout, const std::array<bool, 3>& periodic,
+                                     const Vec3& centre, double radius,
+                                     std::vector<CellShare>& shares) {
+  thread_local std::array<AxisSpan, 3> span;
+  if (spans_one_cell(layout, periodic, centre, radius, span))
+    shares.push_back({spanned_cell(layout, span, 0, 0, 0), 1.0});
+  else
+    split_spanning(layout, periodic, centre, radius, span, shares, false);
 }
 
 std::vector<CellShare> split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,

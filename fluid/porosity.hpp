@@ -47,9 +47,16 @@ struct CellShare {
 /// its volume in each (exact volumes, normalised so that the fractions sum to 1 to round-off,
 /// about 1e-15). Periodic axes wrap; on a walled axis the part of a sphere poking out of the
 /// grid (by round-off) counts in the boundary cell. A sphere inside one cell costs a few
-/// comparisons; otherwise one exact ball-corner volume per grid node inside its bounding box.
+/// comparisons, one across a single face two exact ball-corner volumes; otherwise it costs one
+/// per grid node inside its bounding box.
 void split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic, const Vec3& centre,
                   double radius, std::vector<CellShare>& shares);
+namespace detail {
+/// split_sphere without its shortcut for a sphere across one face (every node's ball-corner
+/// volume, each cell's by inclusion-exclusion): the oracle the shortcut gives the same bits as.
+void split_sphere_by_corners(const CellLayout& layout, const std::array<bool, 3>& periodic,
+                             const Vec3& centre, double radius, std::vector<CellShare>& shares);
+}  // namespace detail
 /// Same, returning the shares (allocates; prefer the appending form in loops).
 std::vector<CellShare> split_sphere(const CellLayout& layout, const std::array<bool, 3>& periodic,
                                     const Vec3& centre, double radius);

@@ -53,6 +53,44 @@ TEST(Calendar, MatchesLinearScanOracle) {
   }
 }
 
+// set_first (all particles scheduled after a fluid step) against set one slot at a time: the
+// same top after it, and the same order of events (pop, set later) for long after, on
+// calendars whose slots beyond n (the global events) hold times of their own, with ties.
+TEST(Calendar, SetFirstIsSetOneByOne) {
+  Rng rng(13);
+  for (int round = 0; round < 40; ++round) {
+    const std::size_t slots = 1 + rng.below(round < 30 ? 300 : 3000);
+    const std::size_t n = rng.below(slots + 1);
+    auto draw = [&] {
+      const double kind = rng.uniform();
+      return kind < 0.1 ? kNever : kind < 0.5 ? double(rng.below(8)) : rng.uniform(0, 10);
+    };
+    Calendar bulk(slots), single(slots);
+    std::vector<double> times(slots, kNever);
+    for (int step = 0; step < 3 * static_cast<int>(slots); ++step) {  // a history first
+      const std::size_t slot = rng.below(slots);
+      times[slot] = draw();
+      bulk.set(slot, times[slot]);
+      single.set(slot, times[slot]);
+    }
+    std::vector<double> fresh(n);
+    for (double& t : fresh) t = draw();
+    bulk.set_first(n, [&](std::size_t s) { return fresh[s]; });
+    for (std::size_t s = 0; s < n; ++s) single.set(s, fresh[s]);
+    for (std::size_t s = 0; s < n; ++s) times[s] = fresh[s];
+    for (int step = 0; step < 2000; ++step) {
+      ASSERT_EQ(bulk.top_slot(), single.top_slot()) << "round " << round << " step " << step;
+      ASSERT_EQ(bulk.top_slot(), oracle_top(times));
+      ASSERT_EQ(bulk.top_time(), single.top_time());
+      const std::size_t top = bulk.top_slot();
+      const double later = std::max(times[top], 0.0) + rng.uniform(0, 1);
+      times[top] = later == times[top] ? kNever : later;
+      bulk.set(top, times[top]);
+      single.set(top, times[top]);
+    }
+  }
+}
+
 // The event-loop pattern: pop the top, re-schedule it later; events come out in time order.
 TEST(Calendar, PopAndRescheduleGivesNondecreasingTimes) {
   Rng rng(11);

@@ -125,12 +125,16 @@ void EventDrivenEngine::scan_other_levels(std::int32_t i, Event& best, int axis,
   }
 }
 
-void EventDrivenEngine::schedule(std::int32_t i) {
+double EventDrivenEngine::scheduled_time(std::int32_t i) {
   // Round-off may put a root a hair before the last event: nothing happens in the past.
   Agenda& a = agenda_[i];
   if (a.collision.time < last_particle_event_) a.collision.time = last_particle_event_;
   if (a.crossing.time < last_particle_event_) a.crossing.time = last_particle_event_;
-  calendar_.set(static_cast<std::size_t>(i), next_event(i).time);
+  return next_event(i).time;
+}
+
+void EventDrivenEngine::schedule(std::int32_t i) {
+  calendar_.set(static_cast<std::size_t>(i), scheduled_time(i));
 }
 
 template <bool kGravity>

@@ -56,6 +56,16 @@ class Calendar {
     }
     // Otherwise a later entry than the block's earliest: nothing moves.
   }
+  /// Sets slots 0..n-1 to time_of(0..n-1) (n <= size()), as n calls of set would, and then each
+  /// block's place in the heap once: a block's entry is its earliest (time, slot) either way,
+  /// so the top is the same. After a fluid step every particle is predicted again, and n sets
+  /// scanned a block and moved the heap for most of them.
+  template <class TimeOf>
+  void set_first(std::size_t n, TimeOf&& time_of) {
+    for (std::size_t s = 0; s < n; ++s) times_[s] = time_of(s);
+    for (std::size_t block = 0; block * kBlock < n; ++block)
+      heap_.update(handles_[block], earliest_in(block));
+  }
   /// The slot whose entry comes first.
   std::size_t top_slot() const { return heap_.top().slot; }
   /// The earliest time in the calendar, s.

@@ -288,6 +288,9 @@ class EventDrivenEngine final : public CollisionMethod {
   void bound_flights();
   /// Puts particle i's earlier event (collision or crossing) in the calendar.
   void schedule(std::int32_t i);
+  /// The time schedule(i) gives particle i's slot (its agenda's times held at or after the last
+  /// particle event).
+  double scheduled_time(std::int32_t i);
   /// Sets the lasting-contact monitor's limit and window from the options and starts its
   /// window at time t (s) with the current counts.
   void start_rate_monitor(double t);

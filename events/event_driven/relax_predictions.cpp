@@ -311,8 +311,10 @@ void EventDrivenEngine::predict_all<RelaxFlights>() {
     workers->for_chunks(n, plan_range);
   else  // pieces taken in turn by this and the side thread (no wake-up of a sleeping pool)
     carom::for_chunks(horizon_ != kNever ? side_thread() : nullptr, n, kPlanChunk, plan_range);
-  // The calendar receives the same updates in the same order as one prediction at a time.
-  for (std::size_t i = 0; i < n; ++i) schedule(static_cast<std::int32_t>(i));
+  // The calendar: every particle's slot, then each block's place in the heap once (the same
+  // order of events as a schedule per particle; Calendar.SetFirstIsSetOneByOne).
+  calendar_.set_first(
+      n, [this](std::size_t i) { return scheduled_time(static_cast<std::int32_t>(i)); });
 }
 
 template <>

@@ -66,6 +66,28 @@ TEST(Determinism, SameSystemTwiceIsBitIdentical) {
   expect_identical(a, b);
 }
 
+// The loading hints of large systems (EventDrivenOptions::prefetch_from: the partner's records,
+// the cells' first particles, the candidates' records, calendar blocks; and the candidate walk
+// compiled with them) change nothing: the rough mixture with them from the first particle on,
+// against the run without them (it has too few particles for the default), bit for bit; with
+// and without gravity (the walk of each flight).
+TEST(Determinism, LoadingHintsChangeNothing) {
+  for (const bool gravity : {false, true}) {
+    auto run = [&](std::size_t prefetch_from) {
+      System system = rough_mixture();
+      if (gravity) system.flight.gravity = Vec3(0.3, 0.0, -2.0);
+      EventDrivenOptions options;
+      options.prefetch_from = prefetch_from;
+      EventDrivenEngine sim(std::move(system), options);
+      sim.run_until(3.0);
+      return sim.state();
+    };
+    const EngineState hinted = run(0), plain = run(EventDrivenOptions{}.prefetch_from);
+    EXPECT_GT(hinted.statistics.pair_events, 2000u) << "gravity " << gravity;
+    expect_identical(hinted, plain);
+  }
+}
+
 TEST(Determinism, RestoredStateContinuesBitForBit) {
   const System system = rough_mixture();
   EventDrivenEngine uninterrupted(system);

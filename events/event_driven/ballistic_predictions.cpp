@@ -153,7 +153,7 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
   // equal times). Two list places without a branch: the dense fluid's cells hold 0-2 (a
   // settling bed of fines walked four gained 1.4 %, the fluid lost 12 %; tests/bench/README.md).
   PairBatch batch;
-  gather_candidates<2>(i, head, next, cells, count, hot, batch, [&](int found) {
+  auto test = [&](int found) {
     batch.pad_to_vectors(found, &padding);
     if (wrapped)
       contact_times<kGravity, true>(query, batch);
@@ -164,7 +164,11 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
       best_time = batch.time[k];
       best_partner = static_cast<std::int32_t>(batch.state[k] - hot);
     }
-  });
+  };
+  if (prefetching())
+    gather_candidates<2, true>(i, head, next, cells, count, hot, batch, test);
+  else
+    gather_candidates<2>(i, head, next, cells, count, hot, batch, test);
   return best_partner;
 }
 

@@ -66,6 +66,14 @@ class Calendar {
     for (std::size_t block = 0; block * kBlock < n; ++block)
       heap_.update(handles_[block], earliest_in(block));
   }
+  /// Starts loading what set(slot, ...) reads: the block's times (four cache lines) and its
+  /// handle.
+  void prefetch(std::size_t slot) const {
+    const std::size_t block = slot / kBlock;
+    const double* times = times_.data() + block * kBlock;
+    for (std::size_t k = 0; k < kBlock; k += 8) __builtin_prefetch(times + k);
+    __builtin_prefetch(handles_.data() + block);
+  }
   /// The slot whose entry comes first.
   std::size_t top_slot() const { return heap_.top().slot; }
   /// The earliest time in the calendar, s.

@@ -54,6 +54,9 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
   if (statistics_.tagged.any()) statistics_.tagged.book_pair(i, j, si, sj, outcome.impulse);
   ++counter_[i];
   ++counter_[j];
+  // j's place has arrived by now (prefetch_pair): its cells' first particles load while i is
+  // predicted.
+  if (prefetching()) grid_.prefetch_own_block(j);
   predict_pair<Flight>(i, j);
   book_collision(i, t, j);
   book_collision(j, t, i);

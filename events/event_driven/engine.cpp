@@ -394,7 +394,10 @@ bool EventDrivenEngine::run_events(double t_end) {
       // process_particle_event sets the slot again.
       calendar_.set(slot, kNever);
       const std::size_t next = calendar_.top_slot();
-      if (next < end_slot_) prefetch_particle(static_cast<std::int32_t>(next));
+      if (next < end_slot_) {
+        prefetch_particle(static_cast<std::int32_t>(next));
+        if (prefetching()) calendar_.prefetch(next);
+      }
       try {
         process_particle_event<Flight>(static_cast<std::int32_t>(slot));
       } catch (...) {  // the stall detector: leave the calendar and the store consistent
@@ -477,7 +480,7 @@ void EventDrivenEngine::process_particle_event(std::int32_t i) {
                             {system_.particles.id[i]});
   switch (event.kind) {
     case EventKind::Pair:
-      if (agenda_.size() >= kLargeSystem) prefetch_pair(i, event.partner);
+      if (prefetching()) prefetch_pair(i, event.partner);
       if (counter_[event.partner] != event.partner_counter) {
         ++statistics_.invalid_events;
         predict<Flight>(i, /*new_trajectory=*/false);

@@ -310,16 +310,16 @@ class EventDrivenEngine final : public CollisionMethod {
     __builtin_prefetch(&body_[i]);
     grid_.prefetch(i);
   }
-  /// Particles from which a system counts as large: its records (about 190 bytes a particle)
-  /// outgrow the last-level cache, and prefetch_pair pays; below it the records are cached and
-  /// the hints only add work.
-  static constexpr std::size_t kLargeSystem = 100000;
+  /// Whether the system is large enough for the loading hints (options_.prefetch_from): its
+  /// records (about 190 bytes a particle) outgrow the last-level cache, and the hints pay.
+  bool prefetching() const { return agenda_.size() >= options_.prefetch_from; }
   /// For a collision of i with j in a large system: starts loading what the collision and the
   /// two predictions read late, each load otherwise waiting on the one before (j's records and
   /// place, the first particles of the cells of i's block). i's records were prefetched one
   /// event ahead.
   [[gnu::always_inline]] void prefetch_pair(std::int32_t i, std::int32_t j) const {
     prefetch_particle(j);
+    calendar_.prefetch(static_cast<std::size_t>(j));
     grid_.prefetch_own_block(i);
   }
   /// Stall detector bookkeeping; partner_code is a particle index, or -1 - wall index.

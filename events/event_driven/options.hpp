@@ -1,6 +1,8 @@
 #pragma once
 /// The settings of the event-driven engine that a scene gives ([flight], [collisions] collapse,
 /// [engine]).
+#include <cstddef>
+
 #include "core/flight_model.hpp"
 #include "events/laws/collapse.hpp"
 
@@ -38,6 +40,11 @@ struct EventDrivenOptions {
   /// are the same bit for bit either way: off only to check that (the tests' oracle) or to
   /// measure what it saves.
   bool relax_pair_shortcuts = true;
+  /// Particles from which the engine asks the CPU to start loading what an event reads late
+  /// (the partner's records, the cells' first particles, the candidates' records, calendar
+  /// blocks): hints, so the events are the same bit for bit for any value (the tests' oracle
+  /// sets 0). Below it the records stay in the caches and the hints only add instructions.
+  std::size_t prefetch_from = 100000;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.
 #ifdef NDEBUG

@@ -166,7 +166,7 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
     }
   };
   if (prefetching())
-    gather_candidates<2, true>(i, head, next, cells, count, hot, batch, test);
+    gather_candidates<2, true>(i, head, next, cells, count, hot, batch, test, counter_.data());
   else
     gather_candidates<2>(i, head, next, cells, count, hot, batch, test);
   return best_partner;

@@ -109,22 +109,26 @@ struct PairBatch {
 /// particle is written in any case and counted only when it is a candidate (not self, not past
 /// the end), so the next write replaces it. Any depth hands over the same candidates in the same
 /// order. kPrefetch (large systems, where the records and lists miss every cache) starts loading
-/// each list's second place and each first particle's record as soon as the cell's first
-/// particle is known: the record loads then wait on one load, not on the walk (at N = 1e6, 1.24
-/// times the collisions per second, tests/bench/README.md). Hints only: nothing read changes.
+/// each list's second place, each first particle's record and its event counter (`counters`,
+/// which the prediction reads for its partner) as soon as the cell's first particle is known:
+/// those loads then wait on one load, not on the walk (at N = 1e6, 1.24 times the collisions per
+/// second, tests/bench/README.md). Hints only: nothing read changes.
 template <int kUnrolled, bool kPrefetch = false, class Test>
 [[gnu::always_inline]] inline void gather_candidates(std::int32_t self, const std::int32_t* head,
                                                      const std::int32_t* next,
                                                      const std::int32_t* cells, int count,
                                                      const PairState* records, PairBatch& batch,
-                                                     Test&& test) {
+                                                     Test&& test,
+                                                     const std::uint32_t* counters = nullptr) {
   std::int32_t first[HierarchicalGrid::kMaxBlock];
   int occupied = 0;
   for (int c = 0; c < count; ++c) {
     const std::int32_t j = head[cells[c]];
     if constexpr (kPrefetch) {
-      __builtin_prefetch(next + j);
-      __builtin_prefetch(records + j);
+      __builtin_prefetch(next + j);  // next[-1] is there (an empty cell)
+      const std::int32_t k = j < 0 ? 0 : j;
+      __builtin_prefetch(records + k);
+      __builtin_prefetch(counters + k);
     }
     first[occupied] = j;
     occupied += j >= 0;

@@ -12,6 +12,7 @@
 /// Relax flights have no closed-form contact time; their predictions first end the candidates
 /// that cannot be reached at all (reach_tests, may_reach: a bound on how far each can fly), in
 /// the same way. Both walk the grid's cells with gather_candidates.
+#include <cassert>
 #include <cstdint>
 
 #include "core/cell_grid.hpp"
@@ -112,7 +113,8 @@ struct PairBatch {
 /// each list's second place, each first particle's record and its event counter (`counters`,
 /// which the prediction reads for its partner) as soon as the cell's first particle is known:
 /// those loads then wait on one load, not on the walk (at N = 1e6, 1.24 times the collisions per
-/// second, tests/bench/README.md). Hints only: nothing read changes.
+/// second, and 1.11 more with the counters, tests/bench/README.md). `counters` is required with
+/// kPrefetch and unread without it. Hints only: nothing read changes.
 template <int kUnrolled, bool kPrefetch = false, class Test>
 [[gnu::always_inline]] inline void gather_candidates(std::int32_t self, const std::int32_t* head,
                                                      const std::int32_t* next,
@@ -120,6 +122,7 @@ template <int kUnrolled, bool kPrefetch = false, class Test>
                                                      const PairState* records, PairBatch& batch,
                                                      Test&& test,
                                                      const std::uint32_t* counters = nullptr) {
+  assert(!kPrefetch || counters != nullptr);
   std::int32_t first[HierarchicalGrid::kMaxBlock];
   int occupied = 0;
   for (int c = 0; c < count; ++c) {

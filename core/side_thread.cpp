@@ -45,9 +45,9 @@ void SideThread::post(void (*task)(void*), void* argument) {
 }
 
 void SideThread::wake() {
-  // Paired with serve's store of sleeping_ before it reads wakes_ and looks at the state a last
-  // time: either it sees the new state there, or this sees it asleep and raises wakes_ (after
-  // or before serve read it: its wait returns at once, or it saw the new state).
+  // Paired with serve, which reads wakes_, then raises sleeping_, then looks at the state a last
+  // time: either it sees the new state there, or this sees it asleep and raises wakes_ after
+  // serve read it, so that serve's wait returns at once.
   if (sleeping_.load(std::memory_order_seq_cst)) {
     wakes_.fetch_add(1, std::memory_order_seq_cst);
     wakes_.notify_one();
@@ -97,8 +97,11 @@ void SideThread::serve() {
     }
     relax_cpu();
     if (++spins % 256 != 0 || Clock::now() - idle_since < kPatience) continue;
-    sleeping_.store(true, std::memory_order_seq_cst);
+    // wakes_ is read before sleeping_ is raised: a wake() that sees the thread asleep raises
+    // wakes_ after this read, so the wait below returns at once (read after sleeping_, a wake()
+    // between the two would be lost and the thread would sleep on until the next task).
     const unsigned wakes = wakes_.load(std::memory_order_seq_cst);
+    sleeping_.store(true, std::memory_order_seq_cst);
     state = state_.load(std::memory_order_seq_cst);
     if (state != kPosted && state != kStop) wakes_.wait(wakes, std::memory_order_seq_cst);
     sleeping_.store(false, std::memory_order_seq_cst);

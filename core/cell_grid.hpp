@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "domain.hpp"
+#include "huge_pages.hpp"
 #include "vec3.hpp"
 
 namespace carom {
@@ -30,10 +31,10 @@ class HierarchicalGrid {
     /// a copy of the first particle of the cell it is an image of; on a walled axis it stays
     /// empty. Every block is then a fixed set of flat offsets, at the box's faces too.
     std::array<int, 3> padded{1, 1, 1};
-    std::vector<std::int32_t> head;  ///< First particle of each (padded) cell's list, or -1.
+    BigVector<std::int32_t> head;  ///< First particle of each (padded) cell's list, or -1.
     /// Per (padded) cell, an upper bound that the caller keeps on a quantity of the cell's
     /// particles (raise_cell_bound); a halo cell of a periodic axis holds its image's.
-    std::vector<double> cell_bound;
+    BigVector<double> cell_bound;
     std::vector<std::int32_t> block_offsets;  ///< Flat offsets of the block around a cell.
     /// Flat offsets of the far face layer of the block, per face (2 axis + (direction > 0)).
     std::array<std::vector<std::int32_t>, 6> slab_offsets;
@@ -276,15 +277,15 @@ class HierarchicalGrid {
   /// The particle after j in its cell's list is next_[j + 1] (-1 at the end); next_[0] = -1
   /// stands for the end's own successor, so that a walk may read one past the end without a
   /// branch (next_array).
-  std::vector<std::int32_t> next_;
-  std::vector<std::int32_t> prev_;
+  BigVector<std::int32_t> next_;
+  BigVector<std::int32_t> prev_;
   /// Where a particle is: its level and its cell there. Read together at every prediction,
   /// so kept together (one cache miss, not two).
   struct Place {
     std::array<int, 3> cell{0, 0, 0};  ///< Cell coordinates on the level.
     std::uint8_t level = 0;
   };
-  std::vector<Place> place_;  ///< Per particle.
+  BigVector<Place> place_;  ///< Per particle.
 };
 
 template <class Visit>

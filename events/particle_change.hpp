@@ -29,8 +29,8 @@ double change_energy(const ParticleChange& change, const ParticleStore& p, const
 
 /// Applies the change to the particle store and to each per-particle array of the method that
 /// follows the store (`fill` is what a new particle's entry gets).
-template <class T>
-void follow_change(std::vector<T>& column, const ParticleChange& change, const T& fill) {
+template <class T, class Allocator>
+void follow_change(std::vector<T, Allocator>& column, const ParticleChange& change, const T& fill) {
   ParticleStore::erase_indices(column, change.removed);
   column.insert(column.end(), change.added.size(), fill);
 }

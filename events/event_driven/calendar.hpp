@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/huge_pages.hpp"
 #include "core/vec3.hpp"
 
 namespace carom {
@@ -104,7 +105,7 @@ class Calendar {
                                        boost::heap::compare<Later>>;
   Heap heap_;
   std::vector<Heap::handle_type> handles_;  ///< One per block.
-  std::vector<double> times_;               ///< Per slot (padded to whole blocks with kNever).
+  BigVector<double> times_;                 ///< Per slot (padded to whole blocks with kNever).
   std::size_t slots_ = 0;
 };
 

@@ -192,7 +192,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
   restored_ = true;
   hot_.resize(n);
   body_.resize(n);
-  counter_ = std::move(state.event_counters);
+  counter_.assign(state.event_counters.begin(), state.event_counters.end());
   for (std::size_t i = 0; i < n; ++i) {
     body_[i].last_collision = state.last_collision[i];
     load_records(static_cast<std::int32_t>(i));
@@ -222,7 +222,7 @@ EngineState EventDrivenEngine::state() const {
   EngineState s;
   s.particles = system_.particles;
   copy_state_to(s.particles);
-  s.event_counters = counter_;
+  s.event_counters.assign(counter_.begin(), counter_.end());
   const std::size_t n = system_.particles.size();
   s.last_collision.resize(n);
   s.cells.resize(n);

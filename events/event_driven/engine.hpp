@@ -23,6 +23,7 @@
 
 #include "core/cell_grid.hpp"
 #include "core/flight_model.hpp"
+#include "core/huge_pages.hpp"
 #include "core/relax_flight.hpp"
 #include "core/side_thread.hpp"
 #include "core/split_chooser.hpp"
@@ -364,13 +365,13 @@ class EventDrivenEngine final : public CollisionMethod {
   System system_;
   EventDrivenOptions options_;
   Flights flight_kind_ = Flights::Straight;
-  std::vector<HotState> hot_;  ///< Per particle: its motion (see load_records).
-  std::vector<Body> body_;     ///< Per particle: the rest of its changing state.
+  BigVector<HotState> hot_;  ///< Per particle: its motion (see load_records).
+  BigVector<Body> body_;     ///< Per particle: the rest of its changing state.
   /// Per particle: its event counter, bumped whenever its trajectory changes. Read for the
   /// partner of every prediction and every popped event, so kept in a compact array of its
   /// own (128 kB for 32000 particles: it stays in the L2 cache, where in the body records
   /// the read was a miss, 10 % of the run's time).
-  std::vector<std::uint32_t> counter_;
+  BigVector<std::uint32_t> counter_;
   HierarchicalGrid grid_;
   Calendar calendar_;
   /// What one particle waits for, and its stall bookkeeping: read and written at each of its
@@ -380,7 +381,7 @@ class EventDrivenEngine final : public CollisionMethod {
     Event crossing;   ///< Next cell crossing.
     StallRecord stall;
   };
-  std::vector<Agenda> agenda_;           ///< Per particle.
+  BigVector<Agenda> agenda_;             ///< Per particle.
   std::vector<PeriodicAction> actions_;  ///< Slot N + 1 + k: action k.
   std::size_t end_slot_ = 0;             ///< Slot N: the end of the current run_until.
   double time_ = 0;                      ///< Time of the last processed event, s.

@@ -6,7 +6,7 @@
 /// virtual machine a walk of two page tables). Blocks of at least 2 MiB are therefore aligned
 /// to 2 MiB and marked MADV_HUGEPAGE before their first use, so that where transparent huge
 /// pages are "madvise" (Debian's default) or "always" the kernel backs them with huge pages.
-/// Smaller blocks (every array of a system of up to some ten thousand particles) are plain
+/// Smaller blocks (every array of a system of up to about 30 000 particles) are plain
 /// allocations. Nothing computed depends on it: only where the bytes lie.
 #include <cstddef>
 #include <cstdlib>

@@ -5,7 +5,8 @@
 /// every such line also misses the TLB (a page walk, itself of loads that miss, and on a
 /// virtual machine a walk of two page tables). Blocks of at least 2 MiB are therefore aligned
 /// to 2 MiB and marked MADV_HUGEPAGE before their first use, so that where transparent huge
-/// pages are "madvise" (Debian's default) or "always" the kernel backs them with huge pages.
+/// pages are "madvise" (as on the machines carom is measured on) or "always" the kernel backs
+/// them with huge pages.
 /// Smaller blocks (every array of a system of up to about 30 000 particles) are plain
 /// allocations. Nothing computed depends on it: only where the bytes lie.
 #include <cstddef>

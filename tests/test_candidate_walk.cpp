@@ -9,6 +9,7 @@
 // PairBatch::kCapacity. Cases: lists of about 15 (every own block more than a batch), of about
 // one (most places past the end), and empty cells, in boxes walled and periodic (halo cells
 // hold copies of the first particles), with particles taken out and put back as crossings do.
+// The large systems' walk, with its loading hints, hands over the same.
 // HierarchicalGrid::list_length_seen, which chooses the depth, is checked against a count of
 // the particles per cell.
 #include <gtest/gtest.h>
@@ -48,22 +49,24 @@ std::vector<std::int32_t> plain_walk(const HierarchicalGrid& grid, std::int32_t 
   return out;
 }
 
-template <int kUnrolled>
+template <int kUnrolled, bool kPrefetch = false>
 std::vector<std::int32_t> batched_walk(const HierarchicalGrid& grid, std::int32_t i,
-                                       const std::vector<PairState>& records) {
+                                       const std::vector<PairState>& records,
+                                       const std::vector<std::uint32_t>& counters = {}) {
   std::int32_t cells[HierarchicalGrid::kMaxBlock];
   bool wrapped = false;
   const int count = grid.own_block(i, cells, wrapped);
   std::vector<std::int32_t> out;
   PairBatch batch;
-  gather_candidates<kUnrolled>(
+  gather_candidates<kUnrolled, kPrefetch>(
       i, grid.head_array(grid.level_of(i)), grid.next_array(), cells, count, records.data(), batch,
       [&](int found) {
         EXPECT_GT(found, 0);
         EXPECT_LE(found, PairBatch::kCapacity);
         for (int k = 0; k < found; ++k)
           out.push_back(static_cast<std::int32_t>(batch.state[k] - records.data()));
-      });
+      },
+      counters.data());
   return out;
 }
 
@@ -82,6 +85,7 @@ TEST_P(CandidateWalk, HandsOverThePlainWalksCandidatesInOrder) {
     grid.insert(i, position[i]);
   }
   const std::vector<PairState> records(c.count);
+  const std::vector<std::uint32_t> counters(c.count);
   std::size_t longest = 0, handed = 0;
   for (int round = 0; round < 2; ++round) {
     for (std::int32_t i = 0; i < c.count; ++i) {
@@ -92,6 +96,9 @@ TEST_P(CandidateWalk, HandsOverThePlainWalksCandidatesInOrder) {
       EXPECT_EQ(batched_walk<2>(grid, i, records), expected) << "particle " << i;
       EXPECT_EQ(batched_walk<4>(grid, i, records), expected) << "particle " << i;
       EXPECT_EQ(batched_walk<7>(grid, i, records), expected) << "particle " << i;
+      // The large systems' walk, with its loading hints (they change nothing read).
+      EXPECT_EQ((batched_walk<2, true>(grid, i, records, counters)), expected)
+          << "particle " << i;
     }
     // Particles taken out and put back elsewhere (lists relinked mid-way, heads replaced).
     for (std::int32_t i = 0; i < c.count; i += 3) {

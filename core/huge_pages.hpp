@@ -11,6 +11,7 @@
 /// allocations. Nothing computed depends on it: only where the bytes lie.
 #include <cstddef>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <vector>
 #if defined(__linux__)

@@ -41,21 +41,23 @@ BigVector<Line> random_cycle(std::size_t lines, std::uint64_t seed) {
 int main(int argc, char** argv) {
   CLI::App app{"carom_memory_chains: a core's latency and lines in flight from memory"};
   std::size_t mib = 512, loads = 4000000;
-  app.add_option("--mib", mib, "buffer size, MiB (512: far above the last-level cache; 16: in it)")
+  app.add_option("--mib", mib, "buffer size, MiB (512: far above the caches; 4-16: near the L3)")
       ->check(CLI::Range(1, 16384));
-  app.add_option("--loads", loads, "loads per row, over all chains")->check(CLI::Range(1000, 1000000000));
+  app.add_option("--loads", loads, "loads per row, over all chains")
+      ->check(CLI::Range(1000, 1000000000));
   CLI11_PARSE(app, argc, argv);
 
   const std::size_t lines = (mib << 20) / sizeof(Line);
   const BigVector<Line> buffer = random_cycle(lines, 1);
   std::printf("buffer=%zu MiB lines=%zu\n", mib, lines);
   std::uint64_t checksum = 0;
-  // The sizes first, untimed, in the order of the timed rows (the first row ran slow without).
+  // One untimed pass of 16 chains first: without it the first timed row ran slow.
   for (const std::size_t k : {0, 1, 2, 4, 8, 12, 16, 24, 32, 48}) {
     const bool warm_up = k == 0;
     const std::size_t chains = warm_up ? 16 : k;
     std::vector<std::uint32_t> at(chains);
-    for (std::size_t c = 0; c < chains; ++c) at[c] = static_cast<std::uint32_t>(c * (lines / chains));
+    for (std::size_t c = 0; c < chains; ++c)
+      at[c] = static_cast<std::uint32_t>(c * (lines / chains));
     const std::size_t steps = loads / chains;
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t s = 0; s < steps; ++s)

@@ -2,7 +2,7 @@
 // random 64-byte line of a buffer far larger than the caches (in BigVector's huge pages, as the
 // engine's arrays at N = 1e6). One chain measures the latency of a line from memory; k chains
 // in one loop measure how many lines the core keeps in flight, and where that stops growing.
-// An event-driven run at N = 1e6 reads about 50 lines from memory per collision
+// An event-driven run at N = 1e6 reads 56-98 lines from memory per collision
 // (tests/bench/README.md, "What N = 1e6 waits for"); this says how fast it could read them.
 //   carom_memory_chains [--mib M] [--loads L]
 // Each row: chains k, nanoseconds per load of one chain, lines per microsecond over all chains.
@@ -50,11 +50,9 @@ int main(int argc, char** argv) {
   const std::size_t lines = (mib << 20) / sizeof(Line);
   const BigVector<Line> buffer = random_cycle(lines, 1);
   std::printf("buffer=%zu MiB lines=%zu\n", mib, lines);
-  std::uint64_t checksum = 0;
-  // One untimed pass of 16 chains first: without it the first timed row ran slow.
-  for (const std::size_t k : {0, 1, 2, 4, 8, 12, 16, 24, 32, 48}) {
-    const bool warm_up = k == 0;
-    const std::size_t chains = warm_up ? 16 : k;
+  std::uint64_t checksum = 0;  // keeps the loads
+  // Microseconds for `loads` loads shared among `chains` chains.
+  auto time_chains = [&](std::size_t chains) {
     std::vector<std::uint32_t> at(chains);
     for (std::size_t c = 0; c < chains; ++c)
       at[c] = static_cast<std::uint32_t>(c * (lines / chains));
@@ -64,8 +62,13 @@ int main(int argc, char** argv) {
       for (std::size_t c = 0; c < chains; ++c) at[c] = buffer[at[c]].next;
     const double us =
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-    for (const std::uint32_t a : at) checksum += a;  // keeps the loads
-    if (warm_up) continue;
+    for (const std::uint32_t a : at) checksum += a;
+    return us;
+  };
+  time_chains(16);  // untimed: without it the first row ran slow
+  for (const std::size_t k : {1, 2, 4, 8, 12, 16, 24, 32, 48}) {
+    const std::size_t steps = loads / k;
+    const double us = time_chains(k);
     std::printf("chains=%2zu ns_per_load=%6.1f lines_per_us=%6.1f\n", k, 1e3 * us / steps,
                 static_cast<double>(steps * k) / us);
   }

@@ -113,8 +113,10 @@ struct PairBatch {
 /// each list's second place, each first particle's record and its event counter (`counters`,
 /// which the prediction reads for its partner) as soon as the cell's first particle is known:
 /// those loads then wait on one load, not on the walk (at N = 1e6, 1.24 times the collisions per
-/// second, and 1.11 more with the counters, tests/bench/README.md). `counters` is required with
-/// kPrefetch and unread without it. Hints only: nothing read changes.
+/// second, and 1.11 more with the counters, tests/bench/README.md). These hints load into the L2
+/// (kWalkHint, `prefetcht1`), not the L1: the walk asks for about 60 lines at once, and as L1
+/// hints they measured 1.06 times slower at N = 1e6 (tests/bench/README.md, "Hints into the L2").
+/// `counters` is required with kPrefetch and unread without it. Hints only: nothing read changes.
 template <int kUnrolled, bool kPrefetch = false, class Test>
 [[gnu::always_inline]] inline void gather_candidates(std::int32_t self, const std::int32_t* head,
                                                      const std::int32_t* next,
@@ -123,15 +125,17 @@ template <int kUnrolled, bool kPrefetch = false, class Test>
                                                      Test&& test,
                                                      const std::uint32_t* counters = nullptr) {
   assert(!kPrefetch || counters != nullptr);
+  // __builtin_prefetch's locality: 2 is `prefetcht1` on x86-64 (into the L2), 3 `prefetcht0`.
+  constexpr int kWalkHint = 2;
   std::int32_t first[HierarchicalGrid::kMaxBlock];
   int occupied = 0;
   for (int c = 0; c < count; ++c) {
     const std::int32_t j = head[cells[c]];
     if constexpr (kPrefetch) {
-      __builtin_prefetch(next + j);  // next[-1] is there (an empty cell)
+      __builtin_prefetch(next + j, 0, kWalkHint);  // next[-1] is there (an empty cell)
       const std::int32_t k = j < 0 ? 0 : j;
-      __builtin_prefetch(records + k);
-      __builtin_prefetch(counters + k);
+      __builtin_prefetch(records + k, 0, kWalkHint);
+      __builtin_prefetch(counters + k, 0, kWalkHint);
     }
     first[occupied] = j;
     occupied += j >= 0;
@@ -151,7 +155,7 @@ template <int kUnrolled, bool kPrefetch = false, class Test>
       // fewer instructions for the dense fluid than the general one below).
       const bool second = j >= 0;
       batch.state[found] = records + (second ? j : j1);
-      if constexpr (kPrefetch) __builtin_prefetch(records + (second ? j : j1));
+      if constexpr (kPrefetch) __builtin_prefetch(records + (second ? j : j1), 0, kWalkHint);
       found += second & (j != self);
       j = second ? next[j] : -1;
     } else {

@@ -114,8 +114,9 @@ struct PairBatch {
 /// which the prediction reads for its partner) as soon as the cell's first particle is known:
 /// those loads then wait on one load, not on the walk (at N = 1e6, 1.24 times the collisions per
 /// second, and 1.11 more with the counters, tests/bench/README.md). These hints load into the L2
-/// (kWalkHint, `prefetcht1`), not the L1: the walk asks for about 60 lines at once, and as L1
-/// hints they measured 1.06 times slower at N = 1e6 (tests/bench/README.md, "Hints into the L2").
+/// (kWalkHint, `prefetcht1`), not the L1: the walk asks for some 45 lines at once, and into the
+/// L2 they gave N = 1e6 1.06-1.10 times the collisions per second of L1 hints in short windows
+/// (tests/bench/README.md, "The walk's own hints into the L2").
 /// `counters` is required with kPrefetch and unread without it. Hints only: nothing read changes.
 template <int kUnrolled, bool kPrefetch = false, class Test>
 [[gnu::always_inline]] inline void gather_candidates(std::int32_t self, const std::int32_t* head,

@@ -97,7 +97,8 @@ void EventDrivenEngine::plan_ballistic(std::int32_t i) {
   const int count = grid_.own_block(i, cells, wrapped);
   double best_pair_time = best.time;
   const std::int32_t best_partner =
-      scan_cells<kGravity>(i, grid_.level_of(i), cells, count, wrapped, best_pair_time);
+      scan_cells<kGravity>(i, grid_.level_of(i), cells, count, wrapped, best_pair_time,
+                           memo_.empty() ? nullptr : &memo_[i]);
   if (best_partner >= 0)
     best = Event{best_pair_time, best_partner, counter_[best_partner], EventKind::Pair};
   if (grid_.levels().size() > 1) scan_other_levels<kGravity>(i, best);
@@ -139,7 +140,8 @@ void EventDrivenEngine::schedule(std::int32_t i) {
 
 template <bool kGravity>
 std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std::int32_t* cells,
-                                           int count, bool wrapped, double& best_time) const {
+                                           int count, bool wrapped, double& best_time,
+                                           CandidateMemo* memo) const {
   const HotState& a = hot_[i];
   const PairQuery query{a.position, a.velocity, a.clock, a.radius, system_.flight.gravity,
                         system_.domain};
@@ -154,6 +156,10 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
   // settling bed of fines walked four gained 1.4 %, the fluid lost 12 %; tests/bench/README.md).
   PairBatch batch;
   auto test = [&](int found) {
+    if (memo != nullptr) {  // the first batch's candidates: the walk's first kSize
+      memo->remember(batch, found, hot);
+      memo = nullptr;
+    }
     batch.pad_to_vectors(found, &padding);
     if (wrapped)
       contact_times<kGravity, true>(query, batch);

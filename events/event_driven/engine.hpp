@@ -12,6 +12,7 @@
 ///   engine_state*              the saved state and its HDF5 form
 ///   flow_change.cpp            particles leaving and entering (inflow, outflow)
 ///   calendar.hpp, event.hpp, pair_batch.*  the event calendar, the event record, batched tests
+///   candidate_memo.hpp         large systems: each particle's last candidates, as loading hints
 /// The collision laws are in events/laws/, shared with the other methods.
 #include <csignal>
 #include <cstdint>
@@ -28,6 +29,7 @@
 #include "core/side_thread.hpp"
 #include "core/split_chooser.hpp"
 #include "core/system.hpp"
+#include "events/event_driven/candidate_memo.hpp"
 #include "core/worker_pool.hpp"
 #include "events/event_driven/calendar.hpp"
 #include "events/event_driven/engine_state.hpp"
@@ -91,6 +93,11 @@ class EventDrivenEngine final : public CollisionMethod {
 
   /// Each particle's current flight (FlightModel::Relax), in the engine's order.
   const std::vector<RelaxFlight>& flights() const { return flights_; }
+  /// The candidates particle i's last ballistic prediction walked, kept as loading hints in
+  /// large systems (candidate_memo.hpp); nullptr where none are kept (below prefetch_from).
+  const CandidateMemo* candidate_memo(std::size_t i) const {
+    return memo_.empty() ? nullptr : &memo_[i];
+  }
 
   /// The current time, s.
   double time() const override { return time_; }
@@ -237,7 +244,7 @@ class EventDrivenEngine final : public CollisionMethod {
   /// best_time (updated); returns the partner or -1.
   template <bool kGravity>
   std::int32_t scan_cells(std::int32_t i, int level, const std::int32_t* cells, int count,
-                          bool wrapped, double& best_time) const;
+                          bool wrapped, double& best_time, CandidateMemo* memo = nullptr) const;
   /// Earliest contact of i with the particles of the levels other than its own, in the cells
   /// that cover its cell (after a crossing along (axis, direction) with direction != 0: only
   /// those that just came into reach), if earlier than `best` (updated).
@@ -323,6 +330,28 @@ class EventDrivenEngine final : public CollisionMethod {
     calendar_.prefetch(static_cast<std::size_t>(j));
     grid_.prefetch_own_block(i);
   }
+  /// Whether the predictions of Flight keep each particle's candidates (candidate_memo.hpp):
+  /// the ballistic ones in large systems (relax predictions walk their own way).
+  template <class Flight>
+  bool remembers_candidates() const {
+    return !Flight::kGasForces && !memo_.empty();
+  }
+  /// Sizes the candidate memos for the particles present (prefetching() only), each reset.
+  void reset_candidate_memos();
+  /// For particle i's event, at the top of the calendar in a large ballistic system: starts
+  /// loading what its predictions walk before the calendar is updated (its remembered
+  /// candidates, its cells' first particles) and, for a pair event, its partner's records,
+  /// place and memo. i's own records and place were hinted one event ahead.
+  [[gnu::always_inline]] void prefetch_event(std::int32_t i) const {
+    memo_[i].hint(hot_.data(), grid_.next_array(), counter_.data());
+    grid_.prefetch_own_block(i);
+    const Event e = next_event(static_cast<std::size_t>(i));
+    if (e.kind == EventKind::Pair) {
+      prefetch_particle(e.partner);
+      calendar_.prefetch(static_cast<std::size_t>(e.partner));
+      __builtin_prefetch(&memo_[e.partner]);
+    }
+  }
   /// Stall detector bookkeeping; partner_code is a particle index, or -1 - wall index.
   void book_collision(std::int32_t i, double t, std::int32_t partner_code);
   /// "particle ID (species NAME, at X Y Z m)", for diagnostics.
@@ -382,6 +411,8 @@ class EventDrivenEngine final : public CollisionMethod {
     StallRecord stall;
   };
   BigVector<Agenda> agenda_;             ///< Per particle.
+  /// Per particle, in large systems only (prefetching()): its last candidates, as hints.
+  BigVector<CandidateMemo> memo_;
   std::vector<PeriodicAction> actions_;  ///< Slot N + 1 + k: action k.
   std::size_t end_slot_ = 0;             ///< Slot N: the end of the current run_until.
   double time_ = 0;                      ///< Time of the last processed event, s.

@@ -43,13 +43,14 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   if (equilibrate < 0.0) equilibrate = spec.volume_fraction >= 0.4 ? 150.0 : 10.0;
-  const System system = make_granular_gas(spec);
   EventDrivenOptions options;
   options.grid_level_ratio = level_ratio;
   options.grid_subdivision = subdivision;
   options.check_invariants = false;
   options.threads = threads;
-  EventDrivenEngine sim(system, options);
+  // The engine gets the particles without a copy kept here (which held them twice: 116 bytes a
+  // particle of the peak memory at N = 1e6).
+  EventDrivenEngine sim(make_granular_gas(spec), options);
   const std::size_t n = sim.particle_count();
   const double volume = sim.system().domain.volume();
   std::printf("particles=%zu species=%zu grid_levels=%zu box=%.4g\n", n, sim.system().species.size(),

@@ -1,0 +1,89 @@
+// The candidate memo of large systems (events/event_driven/candidate_memo.hpp): each particle's
+// last own-level prediction leaves the first CandidateMemo::kSize candidates it walked, and
+// they serve as loading hints only. That the hints change nothing is
+// Determinism.LoadingHintsChangeNothing; here, what the memo holds, against a slow oracle: the
+// particles whose cells lie within one cell of the particle's on every axis (periodic), found
+// by comparing every pair's cell coordinates.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <vector>
+
+#include "events/event_driven/engine.hpp"
+#include "scenarios/scene/granular_gas.hpp"
+
+namespace carom {
+namespace {
+
+TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
+  GranularGasSpec spec;
+  spec.count = 2000;
+  spec.volume_fraction = 0.40;
+  spec.seed = 5;
+  EventDrivenOptions options;
+  options.prefetch_from = 0;  // memos from the first particle on
+  EventDrivenEngine sim(make_granular_gas(spec), options);
+  const HierarchicalGrid& grid = sim.grid();
+  ASSERT_EQ(grid.levels().size(), 1u);
+  const auto& level = grid.levels()[0];
+  const std::size_t n = sim.particle_count();
+  const Vec3 lower = sim.system().domain.lower;
+
+  // Every particle was predicted once over its block at construction.
+  std::vector<std::array<int, 3>> cell(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 corner = grid.cell_lower(static_cast<std::int32_t>(i));
+    for (int k = 0; k < 3; ++k)
+      cell[i][k] = static_cast<int>(std::lround((corner[k] - lower[k]) / level.cell_size[k]));
+  }
+  auto neighbours = [&](std::size_t i, std::size_t j) {
+    for (int k = 0; k < 3; ++k) {
+      const int m = level.cells[k];
+      const int d = ((cell[i][k] - cell[j][k]) % m + m) % m;  // 0..m-1
+      if (d != 0 && d != 1 && d != m - 1) return false;
+    }
+    return true;
+  };
+  std::size_t full = 0, short_blocks = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::set<std::int32_t> block;
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i && neighbours(i, j)) block.insert(static_cast<std::int32_t>(j));
+    const CandidateMemo* memo = sim.candidate_memo(i);
+    ASSERT_NE(memo, nullptr);
+    std::set<std::int32_t> kept;
+    for (const std::int32_t id : memo->id)
+      if (id != static_cast<std::int32_t>(i)) {
+        EXPECT_TRUE(block.count(id)) << "particle " << i << " remembers " << id << ", not in its block";
+        kept.insert(id);
+      }
+    const std::size_t expected = std::min<std::size_t>(CandidateMemo::kSize, block.size());
+    EXPECT_EQ(kept.size(), expected) << "particle " << i << " with " << block.size() << " in its block";
+    (block.size() >= CandidateMemo::kSize ? full : short_blocks) += 1;
+  }
+  // Both cases occur at phi = 0.40 (about 20 candidates a block on average; 32 of the 2040
+  // blocks here hold fewer than 16, so the padding is exercised too).
+  EXPECT_GT(full, n / 2);
+  EXPECT_GT(short_blocks, 0u);
+
+  // After a run (collisions, crossings, stale events) the memos still name particles only.
+  sim.run_until(2.0);
+  EXPECT_GT(sim.statistics().pair_events, 5000u);
+  for (std::size_t i = 0; i < n; ++i)
+    for (const std::int32_t id : sim.candidate_memo(i)->id)
+      ASSERT_TRUE(id >= 0 && static_cast<std::size_t>(id) < n) << "particle " << i;
+}
+
+TEST(CandidateMemo, NoneBelowPrefetchFrom) {
+  GranularGasSpec spec;
+  spec.count = 500;
+  spec.volume_fraction = 0.30;
+  EventDrivenEngine sim(make_granular_gas(spec));  // default prefetch_from: 100 000
+  EXPECT_EQ(sim.candidate_memo(0), nullptr);
+}
+
+}  // namespace
+}  // namespace carom

@@ -54,27 +54,30 @@ TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
       if (j != i && neighbours(i, j)) block.insert(static_cast<std::int32_t>(j));
     const CandidateMemo* memo = sim.candidate_memo(i);
     ASSERT_NE(memo, nullptr);
-    std::set<std::int32_t> kept;
-    for (const std::int32_t id : memo->id)
-      if (id != static_cast<std::int32_t>(i)) {
-        EXPECT_TRUE(block.count(id)) << "particle " << i << " remembers " << id << ", not in its block";
-        kept.insert(id);
-      }
     const std::size_t expected = std::min<std::size_t>(CandidateMemo::kSize, block.size());
-    EXPECT_EQ(kept.size(), expected) << "particle " << i << " with " << block.size() << " in its block";
+    ASSERT_EQ(static_cast<std::size_t>(memo->count), expected) << "particle " << i << " with " << block.size() << " in its block";
+    std::set<std::int32_t> kept;
+    for (int k = 0; k < memo->count; ++k) {
+      EXPECT_TRUE(block.count(memo->id[k])) << "particle " << i << " remembers " << memo->id[k] << ", not in its block";
+      kept.insert(memo->id[k]);
+    }
+    EXPECT_EQ(kept.size(), expected) << "particle " << i << ": the same candidate twice";
     (block.size() >= CandidateMemo::kSize ? full : short_blocks) += 1;
   }
-  // Both cases occur at phi = 0.40 (about 20 candidates a block on average; 32 of the 2040
-  // blocks here hold fewer than 16, so the padding is exercised too).
+  // Both cases occur at phi = 0.40 (about 20 candidates a block on average; a few dozen of the
+  // 2040 blocks here hold fewer than kSize, so short memos are exercised too).
   EXPECT_GT(full, n / 2);
   EXPECT_GT(short_blocks, 0u);
 
   // After a run (collisions, crossings, stale events) the memos still name particles only.
   sim.run_until(2.0);
   EXPECT_GT(sim.statistics().pair_events, 5000u);
-  for (std::size_t i = 0; i < n; ++i)
-    for (const std::int32_t id : sim.candidate_memo(i)->id)
-      ASSERT_TRUE(id >= 0 && static_cast<std::size_t>(id) < n) << "particle " << i;
+  for (std::size_t i = 0; i < n; ++i) {
+    const CandidateMemo& memo = *sim.candidate_memo(i);
+    ASSERT_TRUE(memo.count > 0 && memo.count <= CandidateMemo::kSize) << "particle " << i;
+    for (int k = 0; k < memo.count; ++k)
+      ASSERT_TRUE(memo.id[k] >= 0 && static_cast<std::size_t>(memo.id[k]) < n) << "particle " << i;
+  }
 }
 
 TEST(CandidateMemo, NoneBelowPrefetchFrom) {

@@ -20,27 +20,28 @@
 namespace carom {
 
 struct alignas(64) CandidateMemo {
-  /// Candidates kept: one cache line of indices (about 20 candidates a block at phi = 0.40).
-  static constexpr int kSize = 16;
+  /// Candidates kept at most: with their count, one cache line (about 20 candidates a block at
+  /// phi = 0.40; a fine among large spheres has 0-3 on its own level).
+  static constexpr int kSize = 15;
+  std::int32_t count = 0;  ///< Entries of id in use.
   std::int32_t id[kSize];
 
-  /// A particle not yet predicted: every entry is the particle itself (its own lines, which its
-  /// event loads anyway).
-  void reset(std::int32_t self) {
-    for (std::int32_t& k : id) k = self;
-  }
+  /// A particle not yet predicted: nothing remembered.
+  void reset() { count = 0; }
   /// The first kSize of the `found` (>= 1) candidates batch.state[0, found) (records of
-  /// `records`); past `found` the last is repeated.
+  /// `records`). Written without a branch on `found`: past it the last is repeated.
   void remember(const PairBatch& batch, int found, const PairState* records) {
     for (int k = 0; k < kSize; ++k)
       id[k] = static_cast<std::int32_t>(batch.state[k < found ? k : found - 1] - records);
+    count = found < kSize ? found : kSize;
   }
   /// Starts loading, into the L2 (`prefetcht1`, as the walk's own hints), what a walk over these
   /// candidates reads: their records, list links and event counters. Always inlined: GCC deems a
   /// function of prefetches alone free of effects and deletes calls to it.
   [[gnu::always_inline]] void hint(const PairState* records, const std::int32_t* next,
                                    const std::uint32_t* counters) const {
-    for (const std::int32_t k : id) {
+    for (int c = 0; c < count; ++c) {
+      const std::int32_t k = id[c];
       __builtin_prefetch(records + k, 0, 2);
       __builtin_prefetch(next + k, 0, 2);
       __builtin_prefetch(counters + k, 0, 2);

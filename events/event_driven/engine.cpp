@@ -297,7 +297,7 @@ void EventDrivenEngine::reset_candidate_memos() {
   memo_.clear();
   if (!prefetching()) return;
   memo_.resize(agenda_.size());
-  for (std::size_t i = 0; i < memo_.size(); ++i) memo_[i].reset(static_cast<std::int32_t>(i));
+  for (CandidateMemo& m : memo_) m.reset();
 }
 
 void EventDrivenEngine::bound_flights() {
@@ -494,7 +494,8 @@ void EventDrivenEngine::process_particle_event(std::int32_t i) {
                             {system_.particles.id[i]});
   switch (event.kind) {
     case EventKind::Pair:
-      if (prefetching()) prefetch_pair(i, event.partner);
+      // (With candidate memos, prefetch_event started these before the calendar's update.)
+      if (prefetching() && !remembers_candidates<Flight>()) prefetch_pair(i, event.partner);
       if (counter_[event.partner] != event.partner_counter) {
         ++statistics_.invalid_events;
         predict<Flight>(i, /*new_trajectory=*/false);

@@ -339,17 +339,19 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Sizes the candidate memos for the particles present (prefetching() only), each reset.
   void reset_candidate_memos();
   /// For particle i's event, at the top of the calendar in a large ballistic system: starts
-  /// loading what its predictions walk before the calendar is updated (its remembered
-  /// candidates, its cells' first particles) and, for a pair event, its partner's records,
-  /// place and memo. i's own records and place were hinted one event ahead.
+  /// loading what its predictions walk before the calendar is updated: its remembered
+  /// candidates and its cells' first particles, and for a pair event what prefetch_pair starts
+  /// and the partner's memo. i's own records and place were hinted one event ahead. Not for a
+  /// cell crossing, whose prediction walks the cells that came into reach, not the block.
   [[gnu::always_inline]] void prefetch_event(std::int32_t i) const {
-    memo_[i].hint(hot_.data(), grid_.next_array(), counter_.data());
-    grid_.prefetch_own_block(i);
     const Event e = next_event(static_cast<std::size_t>(i));
+    if (e.kind == EventKind::CellCrossing) return;
+    memo_[i].hint(hot_.data(), grid_.next_array(), counter_.data());
     if (e.kind == EventKind::Pair) {
-      prefetch_particle(e.partner);
-      calendar_.prefetch(static_cast<std::size_t>(e.partner));
+      prefetch_pair(i, e.partner);
       __builtin_prefetch(&memo_[e.partner]);
+    } else {
+      grid_.prefetch_own_block(i);
     }
   }
   /// Stall detector bookkeeping; partner_code is a particle index, or -1 - wall index.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <vector>
 
@@ -80,12 +81,53 @@ TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
   }
 }
 
-TEST(CandidateMemo, NoneBelowPrefetchFrom) {
+// The memos are hints: a monodisperse gas with them from the first particle on runs bit for bit
+// as without (the default prefetch_from is far above its size), through collisions, crossings
+// and stale events. (Determinism.LoadingHintsChangeNothing runs a bidisperse gas, whose grid
+// may have two levels, where no memos are kept.)
+TEST(CandidateMemo, ChangeNothing) {
+  auto run = [](std::size_t prefetch_from) {
+    GranularGasSpec spec;
+    spec.count = 2000;
+    spec.volume_fraction = 0.40;
+    spec.seed = 11;
+    EventDrivenOptions options;
+    options.prefetch_from = prefetch_from;
+    EventDrivenEngine sim(make_granular_gas(spec), options);
+    EXPECT_EQ(sim.candidate_memo(0) != nullptr, prefetch_from == 0);
+    sim.run_until(2.0);
+    return sim.state();
+  };
+  const EngineState hinted = run(0), plain = run(EventDrivenOptions{}.prefetch_from);
+  EXPECT_GT(hinted.statistics.pair_events, 5000u);
+  EXPECT_GT(hinted.statistics.invalid_events, 500u);
+  EXPECT_GT(hinted.statistics.cell_crossings, 1000u);
+  const ParticleStore &p = hinted.particles, &q = plain.particles;
+  ASSERT_EQ(p.size(), q.size());
+  EXPECT_EQ(std::memcmp(p.position.data(), q.position.data(), p.size() * sizeof(Vec3)), 0);
+  EXPECT_EQ(std::memcmp(p.velocity.data(), q.velocity.data(), p.size() * sizeof(Vec3)), 0);
+  EXPECT_EQ(std::memcmp(p.clock.data(), q.clock.data(), p.size() * sizeof(double)), 0);
+  EXPECT_EQ(hinted.event_counters, plain.event_counters);
+  EXPECT_EQ(hinted.statistics.events, plain.statistics.events);
+  EXPECT_EQ(hinted.statistics.invalid_events, plain.statistics.invalid_events);
+  EXPECT_EQ(std::memcmp(hinted.statistics.virial.data(), plain.statistics.virial.data(), 9 * sizeof(double)), 0);
+}
+
+TEST(CandidateMemo, NoneBelowPrefetchFromOrWithSeveralLevels) {
   GranularGasSpec spec;
   spec.count = 500;
   spec.volume_fraction = 0.30;
-  EventDrivenEngine sim(make_granular_gas(spec));  // default prefetch_from: 100 000
-  EXPECT_EQ(sim.candidate_memo(0), nullptr);
+  EventDrivenEngine small(make_granular_gas(spec));  // default prefetch_from: 100 000
+  EXPECT_EQ(small.candidate_memo(0), nullptr);
+
+  spec.fines_diameter_ratio = 0.4;
+  spec.fines_number_fraction = 0.5;
+  EventDrivenOptions options;
+  options.prefetch_from = 0;
+  options.grid_level_ratio = 0.5;  // a level of its own for the fines
+  EventDrivenEngine two_levels(make_granular_gas(spec), options);
+  ASSERT_EQ(two_levels.grid().levels().size(), 2u);
+  EXPECT_EQ(two_levels.candidate_memo(0), nullptr);
 }
 
 }  // namespace

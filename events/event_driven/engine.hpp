@@ -29,9 +29,9 @@
 #include "core/side_thread.hpp"
 #include "core/split_chooser.hpp"
 #include "core/system.hpp"
-#include "events/event_driven/candidate_memo.hpp"
 #include "core/worker_pool.hpp"
 #include "events/event_driven/calendar.hpp"
+#include "events/event_driven/candidate_memo.hpp"
 #include "events/event_driven/engine_state.hpp"
 #include "events/event_driven/event.hpp"
 #include "events/event_driven/flights.hpp"
@@ -94,7 +94,7 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Each particle's current flight (FlightModel::Relax), in the engine's order.
   const std::vector<RelaxFlight>& flights() const { return flights_; }
   /// The candidates particle i's last ballistic prediction walked, kept as loading hints in
-  /// large systems (candidate_memo.hpp); nullptr where none are kept (below prefetch_from).
+  /// large systems of one grid level (candidate_memo.hpp); nullptr where none are kept.
   const CandidateMemo* candidate_memo(std::size_t i) const {
     return memo_.empty() ? nullptr : &memo_[i];
   }
@@ -336,7 +336,8 @@ class EventDrivenEngine final : public CollisionMethod {
   bool remembers_candidates() const {
     return !Flight::kGasForces && !memo_.empty();
   }
-  /// Sizes the candidate memos for the particles present (prefetching() only), each reset.
+  /// Sizes the candidate memos for the particles present (prefetching(), ballistic flights and
+  /// one grid level only), each reset.
   void reset_candidate_memos();
   /// For particle i's event, at the top of the calendar in a large ballistic system: starts
   /// loading what its predictions walk before the calendar is updated: its remembered

@@ -98,6 +98,27 @@ class HierarchicalGrid {
     const std::int32_t* centre = grid.head.data() + flat_index(at.level, at.cell);
     for (const std::int32_t offset : grid.block_offsets) __builtin_prefetch(centre + offset);
   }
+  /// Flat index (as own_block's) of the cell across `face` (2 axis + (direction > 0)) of
+  /// particle i's cell, wrapped on a periodic axis: i's cell once it has crossed that face (not
+  /// an outer face). own_slab's cells after the crossing are this plus the level's
+  /// slab_offsets[face].
+  std::int32_t cell_across(std::int32_t i, int face) const {
+    const Place& at = place_[i];
+    std::array<int, 3> c = at.cell;
+    const int axis = face / 2, n = levels_[at.level].cells[axis];
+    c[axis] += (face % 2) ? 1 : -1;
+    if (c[axis] == n) c[axis] = 0;
+    if (c[axis] < 0) c[axis] = n - 1;
+    return flat_index(at.level, c);
+  }
+  /// Asks the CPU to start loading the first particles of the cells that come into reach when
+  /// particle i crosses `face` (what the crossing's own-level scan reads first; a hint, changes
+  /// nothing). Always inlined: GCC deletes calls to a function of prefetches alone.
+  [[gnu::always_inline]] void prefetch_entering_slab(std::int32_t i, int face) const {
+    const Level& grid = levels_[place_[i].level];
+    const std::int32_t* centre = grid.head.data() + cell_across(i, face);
+    for (const std::int32_t offset : grid.slab_offsets[face]) __builtin_prefetch(centre + offset);
+  }
   /// How many particles come before i in its cell's list (0: the first). Scans visit a cell's
   /// particles in this order, and a relax prediction's round-off depends on it, so a restored
   /// grid must keep it (insert_at the particles in order of decreasing place).

@@ -186,6 +186,43 @@ TEST(GridCrossing, CrossingFacesWrapsPeriodicAxes) {
   EXPECT_FALSE(grid.is_outer_face(0, 0, -1));
 }
 
+// The crossing's hint (prefetch_entering_slab) loads the cells at cell_across + slab_offsets:
+// they must be the cells own_slab hands the crossing's scan once the particle has crossed, at
+// the box's periodic faces too. Checked by crossing for real, both ways on every open face; the
+// test fails when cell_across forgets the periodic wrap or steps the wrong way.
+TEST(GridCrossing, CellAcrossIsTheCellAfterTheCrossing) {
+  Domain domain;
+  domain.upper = Vec3(5.3, 4.1, 6.2);
+  domain.periodic = {true, false, true};
+  HierarchicalGrid grid(domain, std::vector<double>(400, 0.5), 0.0);
+  Rng rng(11);
+  for (std::int32_t i = 0; i < 400; ++i) {
+    Vec3 r;
+    for (int k = 0; k < 3; ++k) r[k] = rng.uniform() * domain.length()[k];
+    grid.insert(i, r);
+  }
+  long checked = 0, wrapped = 0;
+  for (std::int32_t i = 0; i < 400; ++i)
+    for (int face = 0; face < 6; ++face) {
+      const int axis = face / 2, direction = (face % 2) ? +1 : -1;
+      if (grid.is_outer_face(i, axis, direction)) continue;
+      const std::int32_t across = grid.cell_across(i, face);
+      const Vec3 shift = grid.cross(i, axis, direction);
+      std::int32_t cells[HierarchicalGrid::kMaxBlock];
+      bool wraps = false;
+      const int count = grid.own_slab(i, axis, direction, cells, wraps);
+      const std::vector<std::int32_t>& offsets = grid.levels()[0].slab_offsets[face];
+      ASSERT_EQ(count, static_cast<int>(offsets.size()));
+      for (int k = 0; k < count; ++k)
+        ASSERT_EQ(across + offsets[k], cells[k]) << "particle " << i << " face " << face;
+      ++checked;
+      wrapped += shift != Vec3::Zero();
+      grid.cross(i, axis, -direction);
+    }
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(wrapped, 0);
+}
+
 // The cost model's cells (HierarchicalGrid::cheapest_levels): fines 1:10 that are 99 % of the
 // particles move 32 times as fast as the large ones at one temperature and cross cells all the
 // time; their cells are widened beyond their diameter (fewer crossings, and fewer cells for the

@@ -342,11 +342,15 @@ class EventDrivenEngine final : public CollisionMethod {
   /// For particle i's event, at the top of the calendar in a large ballistic system: starts
   /// loading what its predictions walk before the calendar is updated: its remembered
   /// candidates and its cells' first particles, and for a pair event what prefetch_pair starts
-  /// and the partner's memo. i's own records and place were hinted one event ahead. Not for a
-  /// cell crossing, whose prediction walks the cells that came into reach, not the block.
+  /// and the partner's memo. i's own records and place were hinted one event ahead. A cell
+  /// crossing's prediction walks the cells that come into reach, not the block: their first
+  /// particles are hinted instead.
   [[gnu::always_inline]] void prefetch_event(std::int32_t i) const {
     const Event e = next_event(static_cast<std::size_t>(i));
-    if (e.kind == EventKind::CellCrossing) return;
+    if (e.kind == EventKind::CellCrossing) {
+      grid_.prefetch_entering_slab(i, e.partner);
+      return;
+    }
     memo_[i].hint(hot_.data(), grid_.next_array(), counter_.data());
     if (e.kind == EventKind::Pair) {
       prefetch_pair(i, e.partner);

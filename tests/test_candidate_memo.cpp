@@ -59,16 +59,15 @@ TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
     ASSERT_EQ(static_cast<std::size_t>(memo->count), expected) << "particle " << i << " with " << block.size() << " in its block";
     std::set<std::int32_t> kept;
     for (int k = 0; k < memo->count; ++k) {
-      EXPECT_TRUE(block.count(memo->id[k])) << "particle " << i << " remembers " << memo->id[k] << ", not in its block";
-      kept.insert(memo->id[k]);
+      EXPECT_TRUE(block.count(memo->candidate(static_cast<std::int32_t>(i), k))) << "particle " << i << " remembers " << memo->candidate(static_cast<std::int32_t>(i), k) << ", not in its block";
+      kept.insert(memo->candidate(static_cast<std::int32_t>(i), k));
     }
     EXPECT_EQ(kept.size(), expected) << "particle " << i << ": the same candidate twice";
     (block.size() >= CandidateMemo::kSize ? full : short_blocks) += 1;
   }
-  // Both cases occur at phi = 0.40 (about 20 candidates a block on average; a few dozen of the
-  // 2040 blocks here hold fewer than kSize, so short memos are exercised too).
-  EXPECT_GT(full, n / 2);
-  EXPECT_GT(short_blocks, 0u);
+  // At phi = 0.40 a block holds about 20 candidates, fewer than kSize: the memo holds them all
+  // (a full memo's cut is RemembersTheFirstCandidatesAsOffsets, below).
+  EXPECT_GT(short_blocks, n / 2);
 
   // After a run (collisions, crossings, stale events) the memos still name particles only.
   sim.run_until(2.0);
@@ -77,8 +76,43 @@ TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
     const CandidateMemo& memo = *sim.candidate_memo(i);
     ASSERT_TRUE(memo.count > 0 && memo.count <= CandidateMemo::kSize) << "particle " << i;
     for (int k = 0; k < memo.count; ++k)
-      ASSERT_TRUE(memo.id[k] >= 0 && static_cast<std::size_t>(memo.id[k]) < n) << "particle " << i;
+      ASSERT_TRUE(memo.candidate(static_cast<std::int32_t>(i), k) >= 0 && static_cast<std::size_t>(memo.candidate(static_cast<std::int32_t>(i), k)) < n) << "particle " << i;
   }
+}
+
+// The memo's line, against the batch it was written from: the first kSize candidates in the
+// walk's order, each as its offset from the particle; one whose offset does not fit 16 bits is
+// kept as the particle itself (a hint of a line already loaded), at both ends of the range.
+TEST(CandidateMemo, RemembersTheFirstCandidatesAsOffsets) {
+  std::vector<PairState> records(70000);
+  PairBatch batch;
+  auto fill = [&](const std::vector<std::int32_t>& ids) {
+    for (std::size_t k = 0; k < ids.size(); ++k) batch.state[k] = records.data() + ids[k];
+    return static_cast<int>(ids.size());
+  };
+  CandidateMemo memo;
+  const std::int32_t self = 40000;
+  int found = fill({40005, 7232, 7231, 72767, 72768, 39999});
+  memo.remember(self, batch, found, records.data());
+  ASSERT_EQ(memo.count, 6);
+  EXPECT_EQ(memo.candidate(self, 0), 40005);
+  EXPECT_EQ(memo.candidate(self, 1), 7232);   // offset -32768: fits
+  EXPECT_EQ(memo.candidate(self, 2), self);   // -32769: does not
+  EXPECT_EQ(memo.candidate(self, 3), 72767);  // +32767: fits
+  EXPECT_EQ(memo.candidate(self, 4), self);   // +32768: does not
+  EXPECT_EQ(memo.candidate(self, 5), 39999);
+
+  std::vector<std::int32_t> many;
+  for (int k = 0; k < CandidateMemo::kSize + 9; ++k) many.push_back(self - 20 + 3 * k);
+  found = fill(many);
+  memo.remember(self, batch, found, records.data());
+  ASSERT_EQ(memo.count, CandidateMemo::kSize);
+  for (int k = 0; k < CandidateMemo::kSize; ++k) EXPECT_EQ(memo.candidate(self, k), many[k]) << k;
+
+  found = fill({3});  // a short memo after a full one
+  memo.remember(0, batch, found, records.data());
+  ASSERT_EQ(memo.count, 1);
+  EXPECT_EQ(memo.candidate(0, 0), 3);
 }
 
 // The memos are hints: a monodisperse gas with them from the first particle on runs bit for bit

@@ -157,7 +157,7 @@ std::int32_t EventDrivenEngine::scan_cells(std::int32_t i, int level, const std:
   PairBatch batch;
   auto test = [&](int found) {
     if (memo != nullptr) {  // the first batch's candidates: the walk's first kSize
-      memo->remember(batch, found, hot);
+      memo->remember(i, batch, found, hot);
       memo = nullptr;
     }
     batch.pad_to_vectors(found, &padding);

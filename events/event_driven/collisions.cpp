@@ -58,7 +58,7 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
   // predicted.
   if (prefetching()) grid_.prefetch_own_block(j);
   // j's memo was hinted with the event (prefetch_event): its candidates load while i is predicted.
-  if (remembers_candidates<Flight>()) memo_[j].hint(hot_.data(), grid_.next_array(), counter_.data());
+  if (remembers_candidates<Flight>()) memo_[j].hint(j, hot_.data(), grid_.next_array(), counter_.data());
   predict_pair<Flight>(i, j);
   book_collision(i, t, j);
   book_collision(j, t, i);

@@ -351,7 +351,7 @@ class EventDrivenEngine final : public CollisionMethod {
       grid_.prefetch_entering_slab(i, e.partner);
       return;
     }
-    memo_[i].hint(hot_.data(), grid_.next_array(), counter_.data());
+    memo_[i].hint(i, hot_.data(), grid_.next_array(), counter_.data());
     if (e.kind == EventKind::Pair) {
       prefetch_pair(i, e.partner);
       __builtin_prefetch(&memo_[e.partner]);

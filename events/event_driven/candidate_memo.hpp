@@ -20,8 +20,9 @@
 /// particles in the order of their cells (z slowest), so a block's particles lie within a layer
 /// of cells of the particle in index (about 9 000 at N = 1e6, 20 000 at 3e6). One whose offset
 /// does not fit is kept as the particle itself, whose lines are loaded anyway. Fifteen 32-bit
-/// indices, the first kSize of 15, left a quarter of each walk unhinted; the offsets ran N = 1e6
-/// once mixed 1.08 times as fast (tests/bench/README.md, "The memo as 16-bit offsets").
+/// indices (kSize was 15) left a quarter of each walk unhinted; the offsets ran N = 1e6 1.04 times
+/// as fast once mixed and 1.06 in lattice order (tests/bench/README.md, "The memo as 16-bit
+/// offsets").
 #include <cstdint>
 
 #include "events/event_driven/pair_batch.hpp"

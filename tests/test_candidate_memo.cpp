@@ -59,8 +59,9 @@ TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
     ASSERT_EQ(static_cast<std::size_t>(memo->count), expected) << "particle " << i << " with " << block.size() << " in its block";
     std::set<std::int32_t> kept;
     for (int k = 0; k < memo->count; ++k) {
-      EXPECT_TRUE(block.count(memo->candidate(static_cast<std::int32_t>(i), k))) << "particle " << i << " remembers " << memo->candidate(static_cast<std::int32_t>(i), k) << ", not in its block";
-      kept.insert(memo->candidate(static_cast<std::int32_t>(i), k));
+      const std::int32_t c = memo->candidate(static_cast<std::int32_t>(i), k);
+      EXPECT_TRUE(block.count(c)) << "particle " << i << " remembers " << c << ", not in its block";
+      kept.insert(c);
     }
     EXPECT_EQ(kept.size(), expected) << "particle " << i << ": the same candidate twice";
     (block.size() >= CandidateMemo::kSize ? full : short_blocks) += 1;
@@ -75,8 +76,10 @@ TEST(CandidateMemo, HoldsParticlesOfTheOwnBlockAfterEachPrediction) {
   for (std::size_t i = 0; i < n; ++i) {
     const CandidateMemo& memo = *sim.candidate_memo(i);
     ASSERT_TRUE(memo.count > 0 && memo.count <= CandidateMemo::kSize) << "particle " << i;
-    for (int k = 0; k < memo.count; ++k)
-      ASSERT_TRUE(memo.candidate(static_cast<std::int32_t>(i), k) >= 0 && static_cast<std::size_t>(memo.candidate(static_cast<std::int32_t>(i), k)) < n) << "particle " << i;
+    for (int k = 0; k < memo.count; ++k) {
+      const std::int32_t c = memo.candidate(static_cast<std::int32_t>(i), k);
+      ASSERT_TRUE(c >= 0 && static_cast<std::size_t>(c) < n) << "particle " << i;
+    }
   }
 }
 

@@ -6,13 +6,11 @@
 //   carom_bench --n 32000 --phi 0.40 --threads 2     (then compare collisions_per_second)
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
-#include "events/event_driven/engine.hpp"
-#include "scenarios/scene/granular_gas.hpp"
+#include "tests/bench/fluid_run.hpp"
 
 using namespace carom;
 
@@ -40,6 +38,9 @@ int main(int argc, char** argv) {
          "threads of the run (default 1: collisions per CPU second compare single cores; "
          "with 2, a collision's two predictions run at once: compare collisions_per_second)")
       ->check(CLI::Range(1, 1024));
+  std::size_t prefetch_from = EventDrivenOptions{}.prefetch_from;
+  app.add_option("--prefetch-from", prefetch_from,
+                 "particles from which the engine's loading hints are on (hints: the same events)");
   CLI11_PARSE(app, argc, argv);
 
   if (equilibrate < 0.0) equilibrate = spec.volume_fraction >= 0.4 ? 150.0 : 10.0;
@@ -48,9 +49,11 @@ int main(int argc, char** argv) {
   options.grid_subdivision = subdivision;
   options.check_invariants = false;
   options.threads = threads;
+  options.prefetch_from = prefetch_from;
   // The engine gets the particles without a copy kept here (which held them twice: 116 bytes a
   // particle of the peak memory at N = 1e6).
-  EventDrivenEngine sim(make_granular_gas(spec), options);
+  bench::FluidRun run(spec, options);
+  EventDrivenEngine& sim = run.engine();
   const std::size_t n = sim.particle_count();
   const double volume = sim.system().domain.volume();
   std::printf("particles=%zu species=%zu grid_levels=%zu box=%.4g\n", n, sim.system().species.size(),
@@ -59,44 +62,26 @@ int main(int argc, char** argv) {
     std::printf("  level: %d x %d x %d cells of %.4g, %d per diameter\n", level.cells[0], level.cells[1],
                 level.cells[2], level.cell_size.x(), level.reach);
 
-  // Time for one collision per particle, estimated from Enskog for the large species.
   const double number_density = n / volume, phi = spec.volume_fraction;
   const double g0 = (1 - phi / 2) / std::pow(1 - phi, 3);
   const double mass = sim.system().species[0].mass(), d = spec.diameter;
-  const double enskog_rate = 4 * number_density * d * d * g0 * std::sqrt(std::numbers::pi * spec.temperature / mass);
-  const double chunk = 1.0 / enskog_rate;
-
-  auto run_collisions = [&](double per_particle) {
-    const std::uint64_t target = sim.statistics().pair_events + static_cast<std::uint64_t>(per_particle * n / 2);
-    while (sim.statistics().pair_events < target) sim.run_until(sim.time() + chunk);
-  };
-  run_collisions(equilibrate);
+  run.run_per_particle(equilibrate);
 
   const RunStatistics before = sim.statistics();
   const double t0 = sim.time();
-  auto cpu_seconds = [] {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-  };
-  const double cpu0 = cpu_seconds();
+  const double cpu0 = bench::cpu_seconds();
   const auto wall0 = std::chrono::steady_clock::now();
-  run_collisions(measure);
+  run.run_per_particle(measure);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  const double cpu = cpu_seconds() - cpu0;
+  const double cpu = bench::cpu_seconds() - cpu0;
   const RunStatistics& after = sim.statistics();
-  const double dt = sim.time() - t0;
   const std::uint64_t collisions = after.pair_events - before.pair_events;
 
-  const Energies e = sim.energies();
-  const double temperature = 2.0 * (e.translational) / (3.0 * n);
-  const double virial = (after.virial - before.virial).trace();
-  const double pressure = (n * temperature + virial / (3.0 * dt)) / volume;
-  const double reduced_pressure = pressure * d * d * d / temperature;
-  const double rate = 2.0 * collisions / (n * dt);
+  const bench::FluidRun::Physics physics = run.physics_since(before, t0);
+  const double temperature = physics.temperature;
   std::printf("temperature=%.6f\n", temperature);
-  std::printf("pressure=%.5f\n", reduced_pressure);
-  std::printf("collision_rate=%.5f\n", rate);
+  std::printf("pressure=%.5f\n", physics.pressure);
+  std::printf("collision_rate=%.5f\n", physics.collision_rate);
   if (sim.system().species.size() == 1) {
     std::printf("enskog_pressure=%.5f\n", number_density * d * d * d * (1 + 4 * phi * g0));
     std::printf("enskog_collision_rate=%.5f\n",

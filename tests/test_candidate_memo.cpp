@@ -154,7 +154,7 @@ TEST(CandidateMemo, NoneBelowPrefetchFromOrWithSeveralLevels) {
   GranularGasSpec spec;
   spec.count = 500;
   spec.volume_fraction = 0.30;
-  EventDrivenEngine small(make_granular_gas(spec));  // default prefetch_from: 100 000
+  EventDrivenEngine small(make_granular_gas(spec));  // far below the default prefetch_from
   EXPECT_EQ(small.candidate_memo(0), nullptr);
 
   spec.fines_diameter_ratio = 0.4;

@@ -43,8 +43,12 @@ struct EventDrivenOptions {
   /// Particles from which the engine asks the CPU to start loading what an event reads late
   /// (the partner's records, the cells' first particles, the candidates' records, calendar
   /// blocks): hints, so the events are the same bit for bit for any value (the tests' oracle
-  /// sets 0). Below it the records stay in the caches and the hints only add instructions.
-  std::size_t prefetch_from = 100000;
+  /// sets 0). Below it the records stay in the caches and the hints only add instructions. On
+  /// the machine carom is measured on (a core that can count on 4-8 MiB of L3) the hints of the
+  /// monodisperse fluid at phi = 0.40 break even at about 13 500 particles, pay 1.23 times at
+  /// 32 000 and 1.5 times at 1e5, and cost 8 % at 1e4 (tests/bench/README.md, "Loading hints
+  /// from 16 000 particles").
+  std::size_t prefetch_from = 16000;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.
 #ifdef NDEBUG

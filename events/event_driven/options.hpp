@@ -45,9 +45,9 @@ struct EventDrivenOptions {
   /// blocks): hints, so the events are the same bit for bit for any value (the tests' oracle
   /// sets 0). Below it the records stay in the caches and the hints only add instructions. On
   /// the machine carom is measured on (a core that can count on 4-8 MiB of L3) the hints of the
-  /// monodisperse fluid at phi = 0.40 break even at about 13 500 particles, pay 1.23 times at
-  /// 32 000 and 1.5 times at 1e5, and cost 8 % at 1e4 (tests/bench/README.md, "Loading hints
-  /// from 16 000 particles").
+  /// monodisperse fluid at phi = 0.40 break even at about 13 500 particles, pay 1.04-1.42 times
+  /// at 32 000 (the less of its L3 the host leaves the core, the more) and 1.5 times at 1e5, and
+  /// cost 8 % at 1e4 (tests/bench/README.md, "Loading hints from 16 000 particles").
   std::size_t prefetch_from = 16000;
   /// Check the invariants at every collision (no overlap, momentum balance). On by default in
   /// debug builds; costs a few percent.

@@ -125,7 +125,7 @@ TEST(Scene, ReadsEverySection) {
                            "[[collisions.wall]]\nwall = \"z_low\"\ne = 0.5\n"
                            "[initial]\nseed = 5\ntemperature = 1e-9\n"
                            "[output]\nsnapshot_every = 0.01\nsample_every = 0.001\ncheckpoint_every = 0.05\n"
-                           "[engine]\ngrid_level_ratio = 0.4\n";
+                           "[engine]\ngrid_level_ratio = 0.4\nprefetch_from = 50000\n";
   Scene scene = parse_scene(text, "demo.toml");
   EXPECT_EQ(scene.name, "demo");
   EXPECT_EQ(scene.system.walls.size(), 6u);  // no periodic axis: six box walls
@@ -139,6 +139,7 @@ TEST(Scene, ReadsEverySection) {
   EXPECT_EQ(scene.seed, 5u);
   EXPECT_DOUBLE_EQ(scene.output.checkpoint_every, 0.05);
   EXPECT_DOUBLE_EQ(scene.method.event_driven.grid_level_ratio, 0.4);
+  EXPECT_EQ(scene.method.event_driven.prefetch_from, 50000u);
   build_initial_state(scene);
   EXPECT_EQ(scene.system.particles.size(), 20u);
 }
@@ -194,6 +195,15 @@ TEST(SceneErrors, LastingContactLimitKeys) {
                 "max_collision_frequency"});
   expect_error(kBase + "[collisions]\ncollapse = { model = \"tc\", contact_time = 1e-4, max_collision_frequency = -1 }\n",
                {"bad.toml:12", "collisions.collapse.max_collision_frequency = -1", "[0, inf)"});
+}
+
+// [engine] prefetch_from: a count of particles, 0 (hints always) and up; the default is the
+// engine's own.
+TEST(SceneErrors, PrefetchFromIsACount) {
+  EXPECT_EQ(parse_scene(kBase, "good.toml").method.event_driven.prefetch_from, EventDrivenOptions{}.prefetch_from);
+  EXPECT_EQ(parse_scene(kBase + "[engine]\nprefetch_from = 0\n", "good.toml").method.event_driven.prefetch_from, 0u);
+  expect_error(kBase + "[engine]\nprefetch_from = -1\n", {"bad.toml:12", "engine.prefetch_from = -1", "[0, 1000000000000]"});
+  expect_error(kBase + "[engine]\nprefetch_from = 2.5\n", {"bad.toml:12", "engine.prefetch_from", "not an integer"});
 }
 
 // [method] selects the collision method by name; the default is the event-driven engine, and a

@@ -1,5 +1,6 @@
 #include "scenarios/scene/method_scene.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ void read_engine(TableReader& root, Scene& scene) {
         static_cast<int>(e->integer("threads", 0, 0, 1024,
                                     "threads of one run (0: CAROM_THREADS, else the hardware "
                                     "threads this process may run on)"));
+    scene.method.event_driven.prefetch_from = static_cast<std::size_t>(
+        e->integer("prefetch_from", static_cast<std::int64_t>(scene.method.event_driven.prefetch_from), 0,
+                   1000000000000, "particles from which the engine's loading hints are on (hints change no result)"));
     e->finish();
   }
 }

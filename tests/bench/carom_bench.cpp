@@ -6,9 +6,7 @@
 //   carom_bench --n 32000 --phi 0.40 --threads 2     (then compare collisions_per_second)
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "tests/bench/fluid_run.hpp"
 
@@ -55,16 +53,12 @@ int main(int argc, char** argv) {
   bench::FluidRun run(spec, options);
   EventDrivenEngine& sim = run.engine();
   const std::size_t n = sim.particle_count();
-  const double volume = sim.system().domain.volume();
   std::printf("particles=%zu species=%zu grid_levels=%zu box=%.4g\n", n, sim.system().species.size(),
               sim.grid().levels().size(), sim.system().domain.length().x());
   for (const auto& level : sim.grid().levels())
     std::printf("  level: %d x %d x %d cells of %.4g, %d per diameter\n", level.cells[0], level.cells[1],
                 level.cells[2], level.cell_size.x(), level.reach);
 
-  const double number_density = n / volume, phi = spec.volume_fraction;
-  const double g0 = (1 - phi / 2) / std::pow(1 - phi, 3);
-  const double mass = sim.system().species[0].mass(), d = spec.diameter;
   run.run_per_particle(equilibrate);
 
   const RunStatistics before = sim.statistics();
@@ -83,9 +77,8 @@ int main(int argc, char** argv) {
   std::printf("pressure=%.5f\n", physics.pressure);
   std::printf("collision_rate=%.5f\n", physics.collision_rate);
   if (sim.system().species.size() == 1) {
-    std::printf("enskog_pressure=%.5f\n", number_density * d * d * d * (1 + 4 * phi * g0));
-    std::printf("enskog_collision_rate=%.5f\n",
-                4 * number_density * d * d * g0 * std::sqrt(std::numbers::pi * temperature / mass));
+    std::printf("enskog_pressure=%.5f\n", run.enskog_pressure());
+    std::printf("enskog_collision_rate=%.5f\n", run.enskog_collision_rate(temperature));
   }
   std::printf("cpu_seconds=%.3f collisions_per_cpu_second=%.0f\n", cpu, collisions / cpu);
   std::printf("events=%llu invalid_events=%llu cell_crossings=%llu wall_seconds=%.3f\n",

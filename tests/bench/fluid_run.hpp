@@ -25,11 +25,7 @@ class FluidRun {
       : spec_(spec), sim_(make_granular_gas(spec), options) {
     // Time for one collision per particle, estimated from Enskog for the large species: the
     // engine runs in steps of it until the collisions asked for are done.
-    const double n = static_cast<double>(sim_.particle_count());
-    const double number_density = n / sim_.system().domain.volume(), phi = spec.volume_fraction;
-    const double g0 = (1 - phi / 2) / std::pow(1 - phi, 3);
-    const double mass = sim_.system().species[0].mass(), d = spec.diameter;
-    chunk_ = 1.0 / (4 * number_density * d * d * g0 * std::sqrt(std::numbers::pi * spec.temperature / mass));
+    chunk_ = 1.0 / enskog_collision_rate(spec.temperature);
   }
 
   EventDrivenEngine& engine() { return sim_; }
@@ -60,12 +56,32 @@ class FluidRun {
     return {temperature, pressure * d * d * d / temperature, 2.0 * collisions / (n * dt)};
   }
 
+  /// Enskog's reduced pressure p d^3 / kT with the Carnahan-Starling contact value, for the
+  /// large species' diameter (the monodisperse fluid's reference).
+  double enskog_pressure() const {
+    const double number_density = static_cast<double>(size()) / sim_.system().domain.volume();
+    const double phi = spec_.volume_fraction, d = spec_.diameter;
+    return number_density * d * d * d * (1 + 4 * phi * contact_value());
+  }
+  /// Enskog's collisions per particle per unit time at temperature T.
+  double enskog_collision_rate(double temperature) const {
+    const double number_density = static_cast<double>(size()) / sim_.system().domain.volume();
+    const double d = spec_.diameter, mass = sim_.system().species[0].mass();
+    return 4 * number_density * d * d * contact_value() * std::sqrt(std::numbers::pi * temperature / mass);
+  }
+
   /// run_collisions of `per_particle` collisions per particle.
   void run_per_particle(double per_particle) {
     run_collisions(static_cast<std::uint64_t>(per_particle * static_cast<double>(size()) / 2));
   }
 
  private:
+  /// Carnahan-Starling's contact value g0 at the fluid's volume fraction.
+  double contact_value() const {
+    const double phi = spec_.volume_fraction;
+    return (1 - phi / 2) / std::pow(1 - phi, 3);
+  }
+
   GranularGasSpec spec_;
   EventDrivenEngine sim_;
   double chunk_ = 0;

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <vector>
 
 #include "tests/bench/fluid_run.hpp"
@@ -46,14 +45,10 @@ struct Side {
   }
   void print_physics(const char* name) const {
     const bench::FluidRun::Physics p = run.physics_since(before, t0);
-    const double n = static_cast<double>(run.size()) / run.engine().system().domain.volume();
-    const double phi = run.spec().volume_fraction, d = run.spec().diameter;
-    const double g0 = (1 - phi / 2) / std::pow(1 - phi, 3);
-    const double mass = run.engine().system().species[0].mass();
     std::printf("%s: particles=%zu temperature=%.6f pressure=%.5f collision_rate=%.5f "
                 "enskog_pressure=%.5f enskog_collision_rate=%.5f collisions_per_cpu_second=%.0f\n",
-                name, run.size(), p.temperature, p.pressure, p.collision_rate, n * d * d * d * (1 + 4 * phi * g0),
-                4 * n * d * d * g0 * std::sqrt(std::numbers::pi * p.temperature / mass),
+                name, run.size(), p.temperature, p.pressure, p.collision_rate, run.enskog_pressure(),
+                run.enskog_collision_rate(p.temperature),
                 static_cast<double>(collisions) / cpu);
   }
 };

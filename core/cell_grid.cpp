@@ -401,13 +401,12 @@ HierarchicalGrid::AxisRange HierarchicalGrid::clip(int level, int k, int first, 
 }
 
 HierarchicalGrid::RawRanges HierarchicalGrid::covering_raw(std::int32_t i, int level,
-                                                           double radius_i,
                                                            const std::array<int, 3>& cell) const {
   // The bounds of `cell` as cell_lower and cell_upper compute them for i's own cell, grown as
   // for_each_candidate grows them.
   const Level& own = levels_[place_[i].level];
   const Level& grid = levels_[level];
-  const double reach = radius_i + grid.max_radius;
+  const double reach = reach_between(place_[i].level, level);
   RawRanges raw;
   for (int k = 0; k < 3; ++k) {
     const double lower = domain_.lower[k] + cell[k] * own.cell_size[k];

@@ -169,14 +169,26 @@ class HierarchicalGrid {
   const Domain& domain() const { return domain_; }
 
   /// Calls visit(j) for every particle j != i that could touch i while i stays in its cell.
+  /// On another level these are the particles of the cells that overlap i's cell grown by the
+  /// reach between the two levels (reach_between): the same for every particle of a level, so
+  /// that j's cell is among i's exactly when i's is among j's. A crossing searches only the
+  /// cells that came into reach, and a pair whose cells came within reach when one of them
+  /// crossed is found by that one only because of this symmetry: grown by i's own radius
+  /// instead, a small particle of a level missed partners whose cells a larger one of its
+  /// level would have reached (tests/test_grid_levels_run.cpp).
   template <class Visit>
-  void for_each_candidate(std::int32_t i, double radius_i, Visit&& visit) const {
-    for_each_candidate_on_levels(i, radius_i, /*include_own=*/true, visit);
+  void for_each_candidate(std::int32_t i, Visit&& visit) const {
+    for_each_candidate_on_levels(i, /*include_own=*/true, visit);
   }
   /// As for_each_candidate, but only on the levels other than i's own.
   template <class Visit>
-  void for_each_candidate_on_other_levels(std::int32_t i, double radius_i, Visit&& visit) const {
-    for_each_candidate_on_levels(i, radius_i, /*include_own=*/false, visit);
+  void for_each_candidate_on_other_levels(std::int32_t i, Visit&& visit) const {
+    for_each_candidate_on_levels(i, /*include_own=*/false, visit);
+  }
+  /// The reach between two levels, m: the largest contact distance of a particle of one with a
+  /// particle of the other (the sum of their largest radii).
+  double reach_between(int level, int other) const {
+    return levels_[level].max_radius + levels_[other].max_radius;
   }
   /// The fast path for i's own level: writes the flat (padded) indices of the (2m+1)^3 cells of
   /// the block around i's cell into `cells` and returns how many (beyond a walled face they are
@@ -186,14 +198,14 @@ class HierarchicalGrid {
   /// The cells that entered i's own-level block when it just crossed into its cell along
   /// (axis, direction): the far face layer of the block. Same conventions as own_block.
   int own_slab(std::int32_t i, int axis, int direction, std::int32_t* cells, bool& wrapped) const;
-  /// The cells of another `level` that hold every particle i (radius radius_i) could touch while
-  /// it stays in its cell, in the order for_each_candidate visits them: handed to
+  /// The cells of another `level` that hold every particle i could touch while it stays in its
+  /// cell (those for_each_candidate visits there), in the order for_each_candidate visits them: handed to
   /// visit(cells, count, wrapped) as flat (padded) indices of `level`, at most kMaxBlock at a
   /// time. `wrapped` tells whether they cross a periodic face (partners then need the minimum
   /// image).
   template <class Visit>
-  void for_each_covering_piece(std::int32_t i, int level, double radius_i, Visit&& visit) const {
-    RawRanges raw = covering_raw(i, level, radius_i, place_[i].cell);
+  void for_each_covering_piece(std::int32_t i, int level, Visit&& visit) const {
+    RawRanges raw = covering_raw(i, level, place_[i].cell);
     visit_ranges(level, raw, visit);
   }
   /// As for_each_covering_piece, but only the cells that came into reach when i just crossed
@@ -201,16 +213,16 @@ class HierarchicalGrid {
   /// a crossing through a periodic face (its position was shifted by a box length), or where
   /// the reach spans a whole periodic axis, every covering cell.
   template <class Visit>
-  void for_each_entering_piece(std::int32_t i, int level, double radius_i, int axis, int direction,
+  void for_each_entering_piece(std::int32_t i, int level, int axis, int direction,
                                Visit&& visit) const {
     const std::array<int, 3>& cell = place_[i].cell;
-    RawRanges raw = covering_raw(i, level, radius_i, cell);
+    RawRanges raw = covering_raw(i, level, cell);
     std::array<int, 3> before = cell;
     before[axis] -= direction;
     const int n = levels_[level].cells[axis];
     const bool full_lap = domain_.periodic[axis] && raw.last[axis] - raw.first[axis] + 1 >= n;
     if (before[axis] >= 0 && before[axis] < levels_[place_[i].level].cells[axis] && !full_lap) {
-      const RawRanges old = covering_raw(i, level, radius_i, before);
+      const RawRanges old = covering_raw(i, level, before);
       if (direction > 0)
         raw.first[axis] = std::max(raw.first[axis], old.last[axis] + 1);
       else
@@ -262,8 +274,7 @@ class HierarchicalGrid {
   void link(std::int32_t i);
   void unlink(std::int32_t i);
   template <class Visit>
-  void for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own,
-                                    Visit&& visit) const;
+  void for_each_candidate_on_levels(std::int32_t i, bool include_own, Visit&& visit) const;
   /// A run of consecutive cell indices along one axis, wrapped on periodic axes.
   struct AxisRange {
     int first = 0;   ///< First index (may be negative or past the end before wrapping).
@@ -279,10 +290,9 @@ class HierarchicalGrid {
   struct RawRanges {
     int first[3], last[3];
   };
-  /// The cells of `level` that overlap the cell `cell` of i's level grown by radius_i and the
-  /// level's largest radius, unclipped.
-  RawRanges covering_raw(std::int32_t i, int level, double radius_i,
-                         const std::array<int, 3>& cell) const;
+  /// The cells of `level` that overlap the cell `cell` of i's level grown by the reach between
+  /// the two levels, unclipped.
+  RawRanges covering_raw(std::int32_t i, int level, const std::array<int, 3>& cell) const;
   /// Hands the cells of `raw` (clipped, periodic axes wrapped) to visit(cells, count, wrapped)
   /// in pieces of at most kMaxBlock, z outermost and x innermost.
   template <class Visit>
@@ -310,7 +320,7 @@ class HierarchicalGrid {
 };
 
 template <class Visit>
-void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radius_i, bool include_own,
+void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, bool include_own,
                                                     Visit&& visit) const {
   const int own = place_[i].level;
   for (int level = 0; level < static_cast<int>(levels_.size()); ++level) {
@@ -323,7 +333,7 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, double radiu
         range[k] = clip(level, k, place_[i].cell[k] - grid.reach, place_[i].cell[k] + grid.reach);
     } else {
       const Vec3 lower = cell_lower(i), upper = cell_upper(i);
-      const double reach = radius_i + grid.max_radius;
+      const double reach = reach_between(own, level);
       for (int k = 0; k < 3; ++k) range[k] = covering(level, k, lower[k] - reach, upper[k] + reach);
     }
     for (int a = 0; a < range[2].count; ++a) {

@@ -52,7 +52,7 @@ void validate_initial_state(const System& system, double overlap_tolerance) {
   std::vector<std::int32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) grid.insert(static_cast<std::int32_t>(i), p.position[i]);
   for (std::size_t i = 0; i < n; ++i) {
-    grid.for_each_candidate(static_cast<std::int32_t>(i), p.radius[i], [&](std::int32_t j) {
+    grid.for_each_candidate(static_cast<std::int32_t>(i), [&](std::int32_t j) {
       if (static_cast<std::size_t>(j) < i) return;
       Vec3 dr = p.position[i] - p.position[j];
       system.domain.minimum_image(dr);

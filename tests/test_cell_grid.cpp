@@ -24,10 +24,11 @@ double interval_gap(double lo1, double hi1, double lo2, double hi2) {
   return std::max(0.0, std::max(lo1 - hi2, lo2 - hi1));
 }
 
-double box_distance(const HierarchicalGrid& grid, std::int32_t i, std::int32_t j) {
+/// Per axis, the gap between the cells of i and j (the nearest periodic image).
+Vec3 box_gap_per_axis(const HierarchicalGrid& grid, std::int32_t i, std::int32_t j) {
   const Domain& d = grid.domain();
   const Vec3 li = grid.cell_lower(i), ui = grid.cell_upper(i), lj = grid.cell_lower(j), uj = grid.cell_upper(j);
-  double sum = 0.0;
+  Vec3 gaps;
   for (int k = 0; k < 3; ++k) {
     double gap = interval_gap(li[k], ui[k], lj[k], uj[k]);
     if (d.periodic[k]) {
@@ -35,9 +36,13 @@ double box_distance(const HierarchicalGrid& grid, std::int32_t i, std::int32_t j
       gap = std::min({gap, interval_gap(li[k], ui[k], lj[k] + L, uj[k] + L),
                       interval_gap(li[k], ui[k], lj[k] - L, uj[k] - L)});
     }
-    sum += gap * gap;
+    gaps[k] = gap;
   }
-  return std::sqrt(sum);
+  return gaps;
+}
+
+double box_distance(const HierarchicalGrid& grid, std::int32_t i, std::int32_t j) {
+  return box_gap_per_axis(grid, i, j).norm();
 }
 
 struct GridCase {
@@ -58,14 +63,14 @@ class GridOracle : public ::testing::TestWithParam<GridCase> {};
 const std::vector<double> kFinesRich = {1.0, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1,
                                         0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1};
 
-TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
-  const GridCase& c = GetParam();
+/// The case's grid with its particles placed at random (radii into `radius`).
+HierarchicalGrid filled_grid(const GridCase& c, std::vector<double>& radius) {
   Rng rng(77);
   Domain domain;
   domain.lower = Vec3(-1.0, 0.5, 2.0);
   domain.upper = domain.lower + c.length;
   domain.periodic = c.periodic;
-  std::vector<double> radius(c.count);
+  radius.assign(c.count, 0.0);
   std::vector<Vec3> position(c.count);
   for (int i = 0; i < c.count; ++i) {
     radius[i] = 0.5 * c.diameters[rng.below(c.diameters.size())];
@@ -73,10 +78,17 @@ TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
   }
   HierarchicalGrid grid(domain, radius, c.level_ratio, c.subdivision);
   for (int i = 0; i < c.count; ++i) grid.insert(i, position[i]);
+  return grid;
+}
+
+TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
+  const GridCase& c = GetParam();
+  std::vector<double> radius;
+  const HierarchicalGrid grid = filled_grid(c, radius);
   long required = 0, visited_total = 0;
   for (std::int32_t i = 0; i < c.count; ++i) {
     std::vector<int> seen(c.count, 0);
-    grid.for_each_candidate(i, radius[i], [&](std::int32_t j) {
+    grid.for_each_candidate(i, [&](std::int32_t j) {
       ASSERT_NE(j, i) << "a particle is its own candidate";
       ++seen[j];
       ++visited_total;
@@ -97,6 +109,40 @@ TEST_P(GridOracle, VisitsEveryPossiblePartnerOnce) {
   EXPECT_GT(required, c.count) << "the case must exercise many required pairs";
   // The hierarchy must also be worth having: far fewer visits than all pairs.
   EXPECT_LT(visited_total, 0.5 * double(c.count) * c.count);
+}
+
+// A crossing searches the other levels only in the cells that came into its reach, so a pair on
+// two levels whose cells came within reach of each other when one of them crossed is found by
+// that one alone: j must be among i's candidates exactly when i is among j's, whatever their
+// radii within their levels. (Grown by each particle's own radius, a small particle of a
+// polydisperse level reached fewer cells than the large ones of the other level reached back,
+// and runs missed collisions: GridLevelsRun.PolydisperseLevelsMatchOneGrid.)
+TEST_P(GridOracle, OtherLevelsSeeEachOtherBothWays) {
+  const GridCase& c = GetParam();
+  std::vector<double> radius;
+  const HierarchicalGrid grid = filled_grid(c, radius);
+  std::vector<std::set<std::int32_t>> seen(c.count);
+  for (std::int32_t i = 0; i < c.count; ++i)
+    grid.for_each_candidate_on_other_levels(i, [&](std::int32_t j) { seen[i].insert(j); });
+  long pairs = 0;
+  for (std::int32_t i = 0; i < c.count; ++i)
+    for (const std::int32_t j : seen[i]) {
+      ASSERT_NE(grid.level_of(i), grid.level_of(j)) << c.name;
+      ++pairs;
+      if (seen[j].count(i)) continue;
+      // Where the levels' cells line up, a cell may lie exactly the reach away, and round-off
+      // decides each side: touching takes both centres on the cells' faces, a set of measure
+      // zero (as in VisitsEveryPossiblePartnerOnce).
+      const double reach = grid.reach_between(grid.level_of(i), grid.level_of(j));
+      const double gap = box_gap_per_axis(grid, i, j).maxCoeff();
+      ASSERT_NEAR(gap, reach, 1e-9 * reach)
+          << c.name << ": " << j << " (a=" << radius[j] << ", level " << grid.level_of(j)
+          << ") is a candidate of " << i << " (a=" << radius[i] << ", level " << grid.level_of(i)
+          << ") but not the other way round";
+    }
+  if (grid.levels().size() > 1) {
+    EXPECT_GT(pairs, c.count) << "the case must exercise many pairs";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -174,7 +220,7 @@ TEST(GridCrossing, CrossingFacesWrapsPeriodicAxes) {
   grid.insert(1, Vec3(3.9, 0.1, 0.1));
   // 0 and 1 are neighbours through the x and z boundaries.
   int found = 0;
-  grid.for_each_candidate(0, 0.5, [&](std::int32_t j) { found += j == 1; });
+  grid.for_each_candidate(0, [&](std::int32_t j) { found += j == 1; });
   EXPECT_EQ(found, 1);
   const Vec3 shift = grid.cross(0, 0, -1);  // leave through x = 0
   EXPECT_EQ(shift, Vec3(4, 0, 0));
@@ -272,9 +318,9 @@ struct FinesGrid {
       cells.insert(cells.end(), c, c + count);
     };
     if (direction == 0)
-      grid.for_each_covering_piece(i, level, radius[i], take);
+      grid.for_each_covering_piece(i, level, take);
     else
-      grid.for_each_entering_piece(i, level, radius[i], axis, direction, take);
+      grid.for_each_entering_piece(i, level, axis, direction, take);
     return cells;
   }
 };
@@ -289,7 +335,7 @@ TEST(GridLevels, CoveringPiecesHoldTheOtherLevelsCandidatesInOrder) {
     ASSERT_EQ(f.grid.levels().size(), 2u);
     for (std::int32_t i = 0; i < 5000; i += 7) {
       std::vector<std::int32_t> expected, walked;
-      f.grid.for_each_candidate_on_other_levels(i, f.radius[i],
+      f.grid.for_each_candidate_on_other_levels(i,
                                                 [&](std::int32_t j) { expected.push_back(j); });
       const int other = 1 - f.grid.level_of(i);
       for (const std::int32_t cell : f.pieces(i, other))

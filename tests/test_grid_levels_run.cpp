@@ -12,34 +12,41 @@
 // room, and a missed or spurious collision changes a velocity by order 1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/rng.hpp"
 #include "events/event_driven/engine.hpp"
 #include "scenarios/scene/granular_gas.hpp"
 
 namespace carom {
 namespace {
 
-void expect_same_run_on_one_grid(const Vec3& gravity) {
+/// The 3000-particle mixture of 97 % fines of a tenth of the diameter (phi = 0.3).
+System fines_mixture(std::uint64_t seed) {
   GranularGasSpec spec;
   spec.count = 3000;
   spec.volume_fraction = 0.3;
   spec.fines_diameter_ratio = 0.1;
   spec.fines_number_fraction = 0.97;
-  spec.seed = 11;
-  System system = make_granular_gas(spec);
-  system.flight.gravity = gravity;
-  EventDrivenOptions levels, one_grid;
+  spec.seed = seed;
+  return make_granular_gas(spec);
+}
+
+/// Runs `system` to t = 0.012 on the grid levels of `levels` and on one grid, with every
+/// collision checked for overlaps, and compares the final states.
+void expect_same_run_on_one_grid(const System& system, EventDrivenOptions levels,
+                                 std::size_t level_count) {
+  EventDrivenOptions one_grid;
   levels.check_invariants = one_grid.check_invariants = true;
   one_grid.grid_level_ratio = 0.0;
   EventDrivenEngine a(system, levels), b(system, one_grid);
-  ASSERT_EQ(a.grid().levels().size(), 2u);
-  ASSERT_GE(a.grid().levels()[1].cell_size.x(), 1.5 * 0.1) << "the fines' cells are not widened";
+  ASSERT_EQ(a.grid().levels().size(), level_count);
   ASSERT_EQ(b.grid().levels().size(), 1u);
   const double end = 0.012;
   a.run_until(end);
   b.run_until(end);
-  ASSERT_GT(a.statistics().pair_events, spec.count / 2) << "too short to test anything";
+  ASSERT_GT(a.statistics().pair_events, system.particles.size() / 4) << "too short to test anything";
   EXPECT_GT(a.statistics().cell_crossings, 2 * a.statistics().pair_events);
   EXPECT_EQ(a.statistics().pair_events, b.statistics().pair_events);
   double worst = 0.0;
@@ -51,12 +58,46 @@ void expect_same_run_on_one_grid(const Vec3& gravity) {
   EXPECT_LT(worst, 1e-7);
 }
 
+void expect_cost_model_run_on_one_grid(const Vec3& gravity) {
+  System system = fines_mixture(11);
+  system.flight.gravity = gravity;
+  const EventDrivenEngine probe(system, EventDrivenOptions{});
+  ASSERT_GE(probe.grid().levels()[1].cell_size.x(), 1.5 * 0.1) << "the fines' cells are not widened";
+  expect_same_run_on_one_grid(system, EventDrivenOptions{}, 2);
+}
+
 TEST(GridLevelsRun, StraightFlightsMatchOneGrid) {
-  expect_same_run_on_one_grid(Vec3::Zero());
+  expect_cost_model_run_on_one_grid(Vec3::Zero());
 }
 
 TEST(GridLevelsRun, FlightsUnderGravityMatchOneGrid) {
-  expect_same_run_on_one_grid(Vec3(0.3, -0.2, -1.0));
+  expect_cost_model_run_on_one_grid(Vec3(0.3, -0.2, -1.0));
+}
+
+// Levels that each hold a range of sizes: the fines' radii spread over [low, 1] of theirs and
+// the large ones' over [0.6, 1] (0.8 in the second case), levels started at every halving
+// (grid_level_ratio = 0.5: three levels, then two). Before the other levels' cells were grown by
+// the same reach from both sides (HierarchicalGrid::reach_between), a small particle's crossing
+// missed partners that a large one of its level would have reached, and both runs stopped on an
+// overlap (at t = 0.0089 and 0.0051 s).
+TEST(GridLevelsRun, PolydisperseLevelsMatchOneGrid) {
+  struct Spread {
+    std::uint64_t seed;
+    double fines_low, large_low;
+    std::size_t levels;
+  };
+  for (const Spread& c : {Spread{12, 0.3, 0.6, 3}, Spread{13, 0.5, 0.8, 2}}) {
+    SCOPED_TRACE(c.seed);
+    System system = fines_mixture(c.seed);
+    Rng rng(c.seed);
+    const double large = *std::max_element(system.particles.radius.begin(),
+                                           system.particles.radius.end());
+    for (double& r : system.particles.radius)  // smaller only: no overlaps
+      r *= std::lerp(r > 0.5 * large ? c.large_low : c.fines_low, 1.0, rng.uniform());
+    EventDrivenOptions levels;
+    levels.grid_level_ratio = 0.5;
+    expect_same_run_on_one_grid(system, levels, c.levels);
+  }
 }
 
 }  // namespace

@@ -109,7 +109,6 @@ template <bool kGravity>
 void EventDrivenEngine::scan_other_levels(std::int32_t i, Event& best, int axis,
                                           int direction) const {
   const int own = grid_.level_of(i);
-  const double radius = hot_[i].radius;
   for (int level = 0; level < static_cast<int>(grid_.levels().size()); ++level) {
     if (level == own) continue;
     // The same candidates in the same order as one pair test at a time (the first of equal
@@ -120,9 +119,9 @@ void EventDrivenEngine::scan_other_levels(std::int32_t i, Event& best, int axis,
       if (partner >= 0) best = Event{time, partner, counter_[partner], EventKind::Pair};
     };
     if (direction == 0)
-      grid_.for_each_covering_piece(i, level, radius, scan);
+      grid_.for_each_covering_piece(i, level, scan);
     else
-      grid_.for_each_entering_piece(i, level, radius, axis, direction, scan);
+      grid_.for_each_entering_piece(i, level, axis, direction, scan);
   }
 }
 

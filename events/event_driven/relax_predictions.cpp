@@ -214,7 +214,7 @@ Event EventDrivenEngine::relax_collision(std::int32_t i, double limit) const {
   else
     gather_candidates<kShortListWalk>(i, head, next, cells, count, hot, batch, test);
   if (grid_.levels().size() > 1)  // their pieces may wrap: always the nearest image
-    grid_.for_each_candidate_on_other_levels(i, a.radius, [&](std::int32_t j) {
+    grid_.for_each_candidate_on_other_levels(i, [&](std::int32_t j) {
       if (j != i) consider(j, true);
     });
   return best;

@@ -79,7 +79,7 @@ System make_granular_gas(const GranularGasSpec& spec) {
         const auto id = static_cast<std::int32_t>(i);
         grid.insert(id, r);
         bool overlap = false;
-        grid.for_each_candidate(id, a, [&](std::int32_t j) {
+        grid.for_each_candidate(id, [&](std::int32_t j) {
           Vec3 dr = r - system.particles.position[j];
           system.domain.minimum_image(dr);
           const double contact = a + radius[j];

@@ -35,7 +35,7 @@ bool Placer::fits(std::int32_t index, const Vec3& r, double a) const {
   for (const Wall& wall : system_.walls)
     if (wall.gap(r, a) < 0.0) return false;
   bool overlap = false;
-  grid_.for_each_candidate(index, a, [&](std::int32_t j) {
+  grid_.for_each_candidate(index, [&](std::int32_t j) {
     if (overlap || j >= index) return;  // only particles already placed
     Vec3 dr = r - system_.particles.position[j];
     system_.domain.minimum_image(dr);

@@ -9,8 +9,10 @@
 /// 3x3x3 block around it; fines looking up at large particles visit a handful of coarse cells;
 /// large particles looking down visit the fine cells around them. With one grid sized by the
 /// largest particle, fines 10x smaller would put ~1000 of them in every cell.
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "domain.hpp"
@@ -208,6 +210,21 @@ class HierarchicalGrid {
     RawRanges raw = covering_raw(i, level, place_[i].cell);
     visit_ranges(level, raw, visit);
   }
+  /// The cells of for_each_covering_piece whose box lies within within() (m) of the point p:
+  /// i's position at some time when every particle of `level` lies in its cell (the boxes are
+  /// taken in i's frame, the image around i's cell; the edge cells of a walled axis reach to
+  /// infinity, as they hold the particles beyond the box). First those within first_reach (m),
+  /// then the others, each pass z outermost and x innermost, in pieces of at most kNearPiece;
+  /// within() is asked at the start of the second pass and after each of its pieces, so a
+  /// caller whose bound shrinks as it finds partners skips more. Where a range along an axis
+  /// is longer than kNearAxis cells, every covering cell, as for_each_covering_piece.
+  template <class Within, class Visit>
+  void for_each_covering_piece_near(std::int32_t i, int level, const Vec3& p, double first_reach,
+                                    Within&& within, Visit&& visit) const;
+  /// Most cells of a piece of for_each_covering_piece_near: the bound is asked again after each.
+  static constexpr int kNearPiece = 64;
+  /// Longest range of cells per axis that for_each_covering_piece_near bounds.
+  static constexpr int kNearAxis = 32;
   /// As for_each_covering_piece, but only the cells that came into reach when i just crossed
   /// into its cell along (axis, direction): those not covered from the cell it came from. After
   /// a crossing through a periodic face (its position was shifted by a box length), or where
@@ -348,6 +365,89 @@ void HierarchicalGrid::for_each_candidate_on_levels(std::int32_t i, bool include
       }
     }
   }
+}
+
+template <class Within, class Visit>
+void HierarchicalGrid::for_each_covering_piece_near(std::int32_t i, int level, const Vec3& p,
+                                                    double first_reach, Within&& within,
+                                                    Visit&& visit) const {
+  const RawRanges raw = covering_raw(i, level, place_[i].cell);
+  const Level& grid = levels_[level];
+  AxisRange range[3];
+  bool wrapped = false;
+  // Per axis and place in its range, the squared distance from p to the cells' slab.
+  double gap2[3][kNearAxis];
+  for (int k = 0; k < 3; ++k) {
+    range[k] = clip(level, k, raw.first[k], raw.last[k]);
+    if (range[k].count == 0) return;
+    if (range[k].count > kNearAxis) {
+      visit_ranges(level, raw, visit);
+      return;
+    }
+    wrapped |= domain_.periodic[k] && (raw.first[k] < 0 || raw.last[k] >= range[k].cells);
+    const bool lap = domain_.periodic[k] && range[k].count == range[k].cells;
+    // The first cell's index in i's frame: the raw one on a periodic axis (its image next to
+    // i's cell), the clipped one on a walled axis.
+    const int first = domain_.periodic[k] ? raw.first[k] : range[k].first;
+    const double h = grid.cell_size[k], inf = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < range[k].count; ++a) {
+      const int m = first + a;
+      double lower = domain_.lower[k] + m * h, upper = lower + h;
+      if (!domain_.periodic[k] && m == 0) lower = -inf;
+      if (!domain_.periodic[k] && m == range[k].cells - 1) upper = inf;
+      const double gap = lap ? 0.0 : std::max({0.0, lower - p[k], p[k] - upper});
+      gap2[k][a] = gap * gap;
+    }
+  }
+  std::int32_t cells[kNearPiece];
+  int count = 0;
+  // Two passes: the cells within `first_reach` of p, then the others within reach (asked
+  // again after each piece). The first ones hold the likely earliest partners, so that the
+  // second pass starts with a near bound.
+  double reach = std::min(first_reach, within()), reach2 = reach * reach, inner2 = -1.0;
+  auto take = [&](int from, int to, int y, int z, bool ask) {
+    for (int d = from; d <= to; ++d) {
+      cells[count++] = flat_index(level, {range[0].at(d), y, z});
+      if (count == kNearPiece) {
+        visit(cells, count, wrapped);
+        count = 0;
+        if (ask) {
+          reach = within();
+          reach2 = reach * reach;
+        }
+      }
+    }
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      inner2 = reach2;
+      reach = within();
+      reach2 = reach * reach;
+    }
+    for (int a = 0; a < range[2].count; ++a) {
+      if (gap2[2][a] > reach2) continue;
+      const int z = range[2].at(a);
+      for (int b = 0; b < range[1].count; ++b) {
+        const double zy = gap2[2][a] + gap2[1][b];
+        if (zy > reach2) continue;
+        const int y = range[1].at(b);
+        // A row's cells within a distance are one run (the gaps fall to 0 at p and rise).
+        int first = 0, last = range[0].count - 1;
+        while (first <= last && zy + gap2[0][first] > reach2) ++first;
+        while (last >= first && zy + gap2[0][last] > reach2) --last;
+        if (zy > inner2) {
+          take(first, last, y, z, pass == 1);
+          continue;
+        }
+        int skip_first = first, skip_last = last;  // the first pass's run
+        while (skip_first <= skip_last && zy + gap2[0][skip_first] > inner2) ++skip_first;
+        while (skip_last >= skip_first && zy + gap2[0][skip_last] > inner2) --skip_last;
+        take(first, skip_first - 1, y, z, true);
+        take(skip_last + 1, last, y, z, true);
+      }
+    }
+  }
+  if (count > 0) visit(cells, count, wrapped);
 }
 
 template <class Visit>

@@ -383,5 +383,109 @@ TEST(GridLevels, EnteringPiecesAreTheCellsThatCameIntoReach) {
   EXPECT_GT(wrapped, 0);
 }
 
+// for_each_covering_piece_near against the cells' boxes: it hands over covering cells only,
+// each once; every cell whose box comes within the reach of the point (the nearest periodic
+// image; an edge cell of a walled axis reaches to infinity) among them; with no bound, every
+// covering cell; and the cells within the first reach before the others.
+TEST(GridLevels, NearPiecesHoldEveryCellWithinReach) {
+  for (const auto periodic :
+       {std::array<bool, 3>{true, false, true}, std::array<bool, 3>{true, true, true}}) {
+    const FinesGrid f(periodic);
+    const HierarchicalGrid& grid = f.grid;
+    Rng rng(3);
+    long near_total = 0, covering_total = 0;
+    for (std::int32_t i = 0; i < 5000; ++i) {
+      if (grid.level_of(i) != 0) continue;
+      const int other = 1;
+      const Vec3 lower = grid.cell_lower(i), upper = grid.cell_upper(i);
+      Vec3 p;
+      for (int k = 0; k < 3; ++k) p[k] = lower[k] + rng.uniform() * (upper[k] - lower[k]);
+      // The distance from p to particle j's cell box.
+      auto distance = [&](std::int32_t j) {
+        const Vec3 lo = grid.cell_lower(j), hi = grid.cell_upper(j);
+        const auto& level = grid.levels()[other];
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k) {
+          double gap = kNever;
+          for (const double shift : {-1.0, 0.0, 1.0}) {
+            if (shift != 0.0 && !periodic[k]) continue;
+            const double L = shift * f.domain.length()[k];
+            double l = lo[k] + L, h = hi[k] + L;
+            if (!periodic[k] && grid.cell_of(j)[k] == 0) l = -kNever;
+            if (!periodic[k] && grid.cell_of(j)[k] == level.cells[k] - 1) h = kNever;
+            gap = std::min(gap, interval_gap(p[k], p[k], l, h));
+          }
+          sum += gap * gap;
+        }
+        return std::sqrt(sum);
+      };
+      const std::vector<std::int32_t> covering_cells = f.pieces(i, other);
+      const std::set<std::int32_t> covering(covering_cells.begin(), covering_cells.end());
+      covering_total += static_cast<long>(covering_cells.size());
+      for (const double reach : {0.0, 0.3, 0.6, kNever}) {
+        std::vector<std::int32_t> cells, visited;
+        grid.for_each_covering_piece_near(
+            i, other, p, 0.55, [&] { return reach; },
+            [&](const std::int32_t* c, int count, bool) {
+              EXPECT_LE(count, HierarchicalGrid::kNearPiece);
+              cells.insert(cells.end(), c, c + count);
+            });
+        const std::set<std::int32_t> handed(cells.begin(), cells.end());
+        ASSERT_EQ(handed.size(), cells.size()) << "a cell handed over twice, particle " << i;
+        for (const std::int32_t c : cells) {
+          ASSERT_TRUE(covering.count(c)) << "cell " << c << " does not cover particle " << i;
+          for (std::int32_t j = grid.head(other, c); j >= 0; j = grid.next(j)) visited.push_back(j);
+        }
+        if (reach == kNever) {
+          EXPECT_EQ(handed, covering) << "particle " << i;
+        } else {
+          near_total += static_cast<long>(cells.size());
+        }
+        const std::set<std::int32_t> seen(visited.begin(), visited.end());
+        for (const std::int32_t c : covering_cells)
+          for (std::int32_t j = grid.head(other, c); j >= 0; j = grid.next(j)) {
+            if (distance(j) <= reach * (1.0 - 1e-12)) {
+              ASSERT_TRUE(seen.count(j)) << "particle " << j << " at " << distance(j)
+                                         << " of particle " << i << " skipped, reach " << reach;
+            }
+          }
+        // The cells within the first reach come first.
+        const double first = std::min(0.55, reach);
+        bool beyond = false;
+        for (const std::int32_t j : visited) {
+          if (distance(j) > first * (1.0 + 1e-12)) beyond = true;
+          if (beyond) {
+            ASSERT_FALSE(distance(j) < first * (1.0 - 1e-12))
+                << "particle " << j << " of the first pass came late, particle " << i;
+          }
+        }
+      }
+    }
+    // Three reaches out of four skip cells: fewer than three walks over every covering cell.
+    EXPECT_LT(near_total, 2 * covering_total);
+    EXPECT_GT(covering_total, 0);
+  }
+}
+
+// Particles beyond a walled face sit in the edge cells: a fine there is within reach of a large
+// particle beyond the same face even where the edge cell's box, taken at its face, is not.
+TEST(GridLevels, NearPiecesReachBeyondTheWalls) {
+  Domain domain;
+  domain.upper = Vec3(8, 8, 8);
+  domain.periodic = {true, false, true};
+  HierarchicalGrid grid(domain, {0.5, 0.05}, 0.5);
+  ASSERT_EQ(grid.levels().size(), 2u);
+  grid.insert(0, Vec3(4.0, -0.8, 4.0));
+  grid.insert(1, Vec3(4.0, -1.3, 4.0));  // 0.5 below: within 0.6, the edge cell 0.8 away
+  std::vector<std::int32_t> cells;
+  grid.for_each_covering_piece_near(
+      0, 1, Vec3(4.0, -0.8, 4.0), 0.55, [] { return 0.6; },
+      [&](const std::int32_t* c, int count, bool) { cells.insert(cells.end(), c, c + count); });
+  int found = 0;
+  for (const std::int32_t c : cells)
+    for (std::int32_t j = grid.head(1, c); j >= 0; j = grid.next(j)) found += j == 1;
+  EXPECT_EQ(found, 1);
+}
+
 }  // namespace
 }  // namespace carom

@@ -88,7 +88,19 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options)
   for (std::size_t i = 0; i < n; ++i) load_records(static_cast<std::int32_t>(i));
   reset_candidate_memos();
   reset_cell_speeds();
+  // The stored states may have different clocks here: a particle need not be in its cell at
+  // the latest of them, which the skipping of cells out of reach assumes (nothing skipped).
+  level_speed2_.assign(grid_.levels().size(), kNever);
   for (std::size_t i = 0; i < n; ++i) predict_any(static_cast<std::int32_t>(i));
+  reset_level_speeds();
+}
+
+void EventDrivenEngine::reset_level_speeds() {
+  level_speed2_.assign(grid_.levels().size(), 0.0);
+  for (std::size_t i = 0; i < hot_.size(); ++i) {
+    double& bound = level_speed2_[grid_.level_of(static_cast<std::int32_t>(i))];
+    bound = std::max(bound, hot_[i].velocity.squaredNorm());
+  }
 }
 
 EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, EngineState state)
@@ -200,6 +212,7 @@ EventDrivenEngine::EventDrivenEngine(System system, EventDrivenOptions options, 
     load_records(static_cast<std::int32_t>(i));
   }
   reset_cell_speeds();
+  reset_level_speeds();
 }
 
 void EventDrivenEngine::start_rate_monitor(double t) {

@@ -248,8 +248,16 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Earliest contact of i with the particles of the levels other than its own, in the cells
   /// that cover its cell (after a crossing along (axis, direction) with direction != 0: only
   /// those that just came into reach), if earlier than `best` (updated).
+  /// Where a level is finer than i's, a full prediction of a straight flight walks only its
+  /// cells that can hold a contact before `best` (with options_.skip_unreachable_cells:
+  /// scan_finer_level_near); the earliest contact is the same bit for bit.
   template <bool kGravity>
   void scan_other_levels(std::int32_t i, Event& best, int axis = 0, int direction = 0) const;
+  /// Hands `scan` the cells of the finer `level` that cover i's cell and can hold a particle
+  /// that touches i before best.time, which `scan` lowers as it finds partners: those within
+  /// touching distance of i first, then the rest in order.
+  template <class Scan>
+  void scan_finer_level_near(std::int32_t i, int level, const Event& best, Scan&& scan) const;
 
   // Relax flights (relax_predictions.cpp).
   /// What relax_pair_time reads of particle i's stored state for every partner: |v| (m/s) and
@@ -279,13 +287,22 @@ class EventDrivenEngine final : public CollisionMethod {
   /// speed_clock_ to the earliest clock. The bounds then stay valid as long as every particle
   /// whose stored velocity changes or that enters a cell raises its cell's (note_speed).
   void reset_cell_speeds();
-  /// Raises the speed bound of particle i's cell to i's stored speed (relax flights only: the
-  /// bounds serve relax predictions alone).
+  /// Raises the speed bound of particle i's cell to i's stored speed (relax flights: the
+  /// bounds serve relax predictions), or the square of its level's to i's squared speed
+  /// (straight flights: for scan_other_levels).
   template <class Flight>
   void note_speed(std::int32_t i) {
     if constexpr (std::is_same_v<Flight, RelaxFlights>)
       grid_.raise_cell_bound(i, RelaxFlightBounds::speed_bound(hot_[i].velocity));
+    if constexpr (std::is_same_v<Flight, StraightFlights>) {
+      double& bound = level_speed2_[grid_.level_of(i)];
+      bound = std::max(bound, hot_[i].velocity.squaredNorm());
+    }
   }
+  /// Sets each level's squared speed bound (level_speed2_) to the largest squared speed of its
+  /// particles' stored velocities. It then stays valid as long as every straight flight whose
+  /// velocity changes raises it (note_speed).
+  void reset_level_speeds();
   /// After a synchronising action: every particle's events predicted again (relax flights:
   /// planned in pieces taken in turn by this and the side thread, or on the worker threads
   /// from 3 threads on, scheduled in particle order; else one by one).
@@ -440,6 +457,10 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Relax: no stored clock is earlier than this (set with the cells' speed bounds by
   /// reset_cell_speeds), s.
   double speed_clock_ = 0;
+  /// Per grid level, at or above the squared speed of each of its particles, (m/s)^2; infinite
+  /// (nothing skipped) until reset_level_speeds. Read by the straight flights' predictions that
+  /// skip the finer levels' cells out of reach (scan_other_levels).
+  std::vector<double> level_speed2_;
   /// Work done on the particles by the gas since the start, J: by the gas forces of relax
   /// flights up to each particle's clock, and by the synchronising actions (drag kicks).
   double gas_work_ = 0;
@@ -473,6 +494,7 @@ void EventDrivenEngine::predict_all<RelaxFlights>();
 
 template <class Flight>
 void EventDrivenEngine::predict_all() {
+  reset_level_speeds();
   for (std::size_t i = 0; i < hot_.size(); ++i) predict<Flight>(static_cast<std::int32_t>(i));
 }
 

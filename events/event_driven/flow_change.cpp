@@ -34,6 +34,7 @@ void EventDrivenEngine::apply_change(const ParticleChange& change) {
                            options_.grid_subdivision);
   for (std::size_t i = 0; i < n; ++i) grid_.insert(static_cast<std::int32_t>(i), p.position[i]);
   reset_cell_speeds();
+  reset_level_speeds();
   reset_candidate_memos();  // the indices have moved
 
   // The calendar: particle slots 0..n-1, the end of the current run_until at n, the actions

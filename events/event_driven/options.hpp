@@ -30,8 +30,11 @@ struct EventDrivenOptions {
   /// (core/worker_pool.hpp).
   int threads = 0;
   /// Relax predictions skip the cells of their block that no particle there can reach in time
-  /// (from a bound on the speeds in each cell). The events are the same bit for bit either
-  /// way: off only to check that (the tests' oracle) or to measure what it saves.
+  /// (from a bound on the speeds in each cell); the full predictions of straight flights skip
+  /// the cells of finer levels that can hold no contact before the earliest one found so far
+  /// (from a bound on each level's speeds: large spheres among fines). The events are the same
+  /// bit for bit either way: off only to check that (the tests' oracle) or to measure what it
+  /// saves.
   bool skip_unreachable_cells = true;
   /// Relax pair predictions end pairs by two cheap, sound tests before the exact ones: the
   /// straight lines of the two stored states keep them apart (lines_apart in pair_batch.hpp: no

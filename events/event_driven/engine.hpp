@@ -248,11 +248,14 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Earliest contact of i with the particles of the levels other than its own, in the cells
   /// that cover its cell (after a crossing along (axis, direction) with direction != 0: only
   /// those that just came into reach), if earlier than `best` (updated).
-  /// Where a level is finer than i's, a full prediction of a straight flight walks only its
-  /// cells that can hold a contact before `best` (with options_.skip_unreachable_cells:
+  /// Where a level is much finer than i's (walks_far_into), a full prediction of a straight
+  /// flight walks only its cells that can hold a contact before `best` (with options_.skip_unreachable_cells:
   /// scan_finer_level_near); the earliest contact is the same bit for bit.
   template <bool kGravity>
   void scan_other_levels(std::int32_t i, Event& best, int axis = 0, int direction = 0) const;
+  /// Whether a particle of level `own` walks the cells of `level` with scan_finer_level_near:
+  /// a finer level whose cells are many along each axis of the block that covers one of own's.
+  bool walks_far_into(int own, int level) const;
   /// Hands `scan` the cells of the finer `level` that cover i's cell and can hold a particle
   /// that touches i before best.time, which `scan` lowers as it finds partners: those within
   /// touching distance of i first, then the rest in order.

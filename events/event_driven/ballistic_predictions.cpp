@@ -142,8 +142,8 @@ void EventDrivenEngine::scan_other_levels(std::int32_t i, Event& best, int axis,
 
 bool EventDrivenEngine::walks_far_into(int own, int level) const {
   // Cells along an axis of the other level's block: the two passes of scan_finer_level_near
-  // paid for carom_bench's 1:10 fines (8.3 cells: 1.10-1.17 times as fast) and not for its 1:5
-  // (5.7 cells: 0.97; tests/bench/README.md).
+  // paid for carom_bench's 1:10 fines (8.3 cells: 1.06-1.17 times as fast, medians of three
+  // sets) and not for its 1:5 (5.7 cells: 0.965; tests/bench/README.md).
   constexpr double kFarFrom = 7.0;
   const auto& levels = grid_.levels();
   if (!(levels[level].max_radius < levels[own].max_radius)) return false;
@@ -166,8 +166,8 @@ void EventDrivenEngine::scan_finer_level_near(std::int32_t i, int level, const E
   // skips more; the cells within touching distance of i come first (they hold the likely
   // earliest partners: 214 cells and 75 candidates walked of 729 and 306, for the large spheres
   // of carom_bench's 1:10 fines; tests/bench/README.md), so of equal times the first in that
-  // order wins. Neither order nor skipping depends on the bound, which only skips cells that
-  // hold no contact up to `best`: the same state gives the same event.
+  // order wins. That order does not depend on the bound, and the bound skips only cells that
+  // hold no contact up to `best`: the same state gives the same event whatever the bound.
   constexpr double kWiden = 1.0 + 1e-9, kFaceMargin = 1e-9;
   const HotState& a = hot_[i];
   const HierarchicalGrid::Level& finer = grid_.levels()[level];

@@ -249,8 +249,8 @@ class EventDrivenEngine final : public CollisionMethod {
   /// that cover its cell (after a crossing along (axis, direction) with direction != 0: only
   /// those that just came into reach), if earlier than `best` (updated).
   /// Where a level is much finer than i's (walks_far_into), a full prediction of a straight
-  /// flight walks only its cells that can hold a contact before `best` (with options_.skip_unreachable_cells:
-  /// scan_finer_level_near); the earliest contact is the same bit for bit.
+  /// flight walks only its cells that can hold a contact before `best` (scan_finer_level_near,
+  /// with options_.skip_unreachable_cells); the earliest contact is the same bit for bit.
   template <bool kGravity>
   void scan_other_levels(std::int32_t i, Event& best, int axis = 0, int direction = 0) const;
   /// Whether a particle of level `own` walks the cells of `level` with scan_finer_level_near:

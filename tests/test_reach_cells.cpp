@@ -26,6 +26,7 @@
 #include "events/event_driven/pair_batch.hpp"
 #include "events/event_driven/reach_cells.hpp"
 #include "scenarios/scene/granular_gas.hpp"
+#include "test_support.hpp"
 
 namespace carom {
 namespace {
@@ -210,18 +211,6 @@ std::unique_ptr<EventDrivenEngine> run_relax_gas(bool drop, bool lines, double e
   return sim;
 }
 
-/// The two runs' particles, event counts and collision counts are the same bit for bit.
-void expect_same_runs(const EventDrivenEngine& a, const EventDrivenEngine& b) {
-  EXPECT_EQ(a.statistics().pair_events, b.statistics().pair_events);
-  EXPECT_EQ(a.statistics().wall_events, b.statistics().wall_events);
-  EXPECT_EQ(a.statistics().cell_crossings, b.statistics().cell_crossings);
-  for (std::size_t i = 0; i < a.particle_count(); ++i) {
-    ASSERT_EQ(a.position(i), b.position(i)) << "particle " << i;
-    ASSERT_EQ(a.velocity(i), b.velocity(i)) << "particle " << i;
-    ASSERT_EQ(a.spin(i), b.spin(i)) << "particle " << i;
-  }
-}
-
 // The gas above for 2 s (about 5900 collisions; 20-35 s in the debug build): with the drop
 // (the default) and without it the run is the same bit for bit, as the drop only spares the
 // walk of cells whose particles the reach test would end; and every 0.05 s each particle's cell
@@ -252,7 +241,7 @@ TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutDroppingCells) {
   // The drop is made on levels whose cells hold several particles (list_length_seen above 2.5,
   // kLongLists in relax_predictions.cpp): this gas must be one.
   EXPECT_GT(dropping->grid().list_length_seen(0), 3.0) << "the lists must be long for the drop";
-  expect_same_runs(*dropping, *plain);
+  test::expect_same_runs(*dropping, *plain);
 }
 
 // The same gas for 1.5 s with the relax pair shortcuts (the default: the line test of the
@@ -267,7 +256,7 @@ TEST(ReachCells, RelaxRunIsTheSameWithAndWithoutThePairShortcuts) {
   const auto plain = run_relax_gas(false, false, 1.5, nothing);
   const auto lines = run_relax_gas(false, true, 1.5, nothing);
   ASSERT_GT(plain->statistics().pair_events, 2000u) << "the run must have collisions to compare";
-  expect_same_runs(*lines, *plain);
+  test::expect_same_runs(*lines, *plain);
 }
 
 }  // namespace

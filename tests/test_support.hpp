@@ -1,5 +1,7 @@
 #pragma once
 /// Slow, obviously-correct helpers shared by the tests (brute-force oracles and kinetic theory).
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -24,6 +26,18 @@ inline double max_relative_overlap(const EventDrivenEngine& sim) {
       worst = std::max(worst, (contact - dr.norm()) / contact);
     }
   return worst;
+}
+
+/// The two runs' particles, event counts and collision counts are the same bit for bit.
+inline void expect_same_runs(const EventDrivenEngine& a, const EventDrivenEngine& b) {
+  EXPECT_EQ(a.statistics().pair_events, b.statistics().pair_events);
+  EXPECT_EQ(a.statistics().wall_events, b.statistics().wall_events);
+  EXPECT_EQ(a.statistics().cell_crossings, b.statistics().cell_crossings);
+  for (std::size_t i = 0; i < a.particle_count(); ++i) {
+    ASSERT_EQ(a.position(i), b.position(i)) << "particle " << i;
+    ASSERT_EQ(a.velocity(i), b.velocity(i)) << "particle " << i;
+    ASSERT_EQ(a.spin(i), b.spin(i)) << "particle " << i;
+  }
 }
 
 /// Largest overlap of a particle with a wall, relative to its radius.

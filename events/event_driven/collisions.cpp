@@ -106,7 +106,7 @@ void EventDrivenEngine::cross_cell(std::int32_t i, int face) {
   // stored states never lag more than one cell behind (so one periodic image shift suffices).
   advance<Flight>(i, time_);
   hot_[i].position += grid_.cross(i, axis, direction);  // a periodic wrap: one box length
-  note_speed<Flight>(i);                                // into its new cell
+  note_cell_entered<Flight>(i);                         // into its new cell
   ++statistics_.cell_crossings;
   // Same trajectory: partners' predictions with i stay valid (no counter bump), and so does
   // i's own next collision.

@@ -288,19 +288,26 @@ class EventDrivenEngine final : public CollisionMethod {
   /// Relax: sets each grid cell's bound (HierarchicalGrid::raise_cell_bound) to the largest
   /// speed (RelaxFlightBounds::speed_bound) of its particles' stored velocities, and
   /// speed_clock_ to the earliest clock. The bounds then stay valid as long as every particle
-  /// whose stored velocity changes or that enters a cell raises its cell's (note_speed).
+  /// whose stored velocity changes or that enters a cell raises its cell's (note_speed,
+  /// note_cell_entered).
   void reset_cell_speeds();
   /// Raises the speed bound of particle i's cell to i's stored speed (relax flights: the
   /// bounds serve relax predictions), or the square of its level's to i's squared speed
   /// (straight flights: for scan_other_levels).
   template <class Flight>
   void note_speed(std::int32_t i) {
-    if constexpr (std::is_same_v<Flight, RelaxFlights>)
-      grid_.raise_cell_bound(i, RelaxFlightBounds::speed_bound(hot_[i].velocity));
+    note_cell_entered<Flight>(i);
     if constexpr (std::is_same_v<Flight, StraightFlights>) {
       double& bound = level_speed2_[grid_.level_of(i)];
       bound = std::max(bound, hot_[i].velocity.squaredNorm());
     }
+  }
+  /// What note_speed does for a particle that entered a cell with the same velocity: raises
+  /// that cell's bound (relax flights; a level's bound does not change).
+  template <class Flight>
+  void note_cell_entered(std::int32_t i) {
+    if constexpr (std::is_same_v<Flight, RelaxFlights>)
+      grid_.raise_cell_bound(i, RelaxFlightBounds::speed_bound(hot_[i].velocity));
   }
   /// Sets each level's squared speed bound (level_speed2_) to the largest squared speed of its
   /// particles' stored velocities. It then stays valid as long as every straight flight whose

@@ -2,6 +2,9 @@
 // slots for the smallest (time, slot).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "core/rng.hpp"
@@ -107,6 +110,77 @@ TEST(Calendar, PopAndRescheduleGivesNondecreasingTimes) {
     // A random other slot is invalidated to a later time, as lazy invalidation does.
     const std::size_t other = rng.below(slots);
     calendar.set(other, std::max(calendar.time_of(other), t) + rng.uniform(0, 0.1));
+  }
+}
+
+
+// Calendars large enough that later blocks wait in time buckets, in the event loop's pattern:
+// pop the top (set to kNever, look at the next top, set the popped slot later), invalidate a
+// neighbour, now and then an earlier time, a tie, kNever, a time far beyond the ring, and a
+// change of time scale that makes the buckets' width wrong (it is tuned again). The oracle is an
+// ordered set of (time, slot): the calendar's top must be its first element, exactly.
+TEST(Calendar, BucketsMatchAnOrderedSet) {
+  for (const std::uint64_t seed : {3u, 4u}) {
+    Rng rng(seed);
+    const std::size_t slots = 100000 + rng.below(1000);
+    Calendar calendar(slots);
+    std::vector<double> times(slots, kNever);
+    std::set<std::pair<double, std::size_t>> oracle;
+    auto set = [&](std::size_t slot, double t) {
+      if (times[slot] != kNever) oracle.erase({times[slot], slot});
+      times[slot] = t;
+      if (t != kNever) oracle.insert({t, slot});
+      calendar.set(slot, t);
+    };
+    auto check = [&](int step) {
+      const std::size_t expected = oracle.empty() ? 0 : oracle.begin()->second;
+      ASSERT_EQ(calendar.top_slot(), expected) << "seed " << seed << " step " << step;
+      ASSERT_EQ(calendar.top_time(), times[expected]);
+    };
+    // Stops the test at the first failure of check (an ASSERT inside a lambda only leaves it).
+#define CHECK_TOP(step)       \
+  check(step);                \
+  if (HasFatalFailure()) return
+    // The first schedule slot by slot, as the engine's constructor makes it.
+    for (std::size_t s = 0; s + 1 < slots; ++s) set(s, rng.uniform(0, 1));
+    set(slots - 1, 1e9);  // the end of the run: far beyond every bucket
+    CHECK_TOP(-1);
+    EXPECT_TRUE(calendar.bucketed());
+    double scale = 1;
+    bool was_bucketed = true;
+    for (int step = 0; step < 400000; ++step) {
+      if (step == 150000) scale = 1e-3;  // events far denser than the width was tuned for
+      if (step == 300000) scale = 1;
+      const std::size_t top = calendar.top_slot();
+      const double now = calendar.top_time();
+      set(top, kNever);
+      CHECK_TOP(step);
+      const double u = rng.uniform();
+      set(top, u < 0.001 ? kNever : u < 0.002 ? now : u < 0.003 ? now + 1e6 : now + scale * -std::log(1 - rng.uniform()));
+      CHECK_TOP(step);
+      const std::size_t other = rng.below(slots - 1);
+      const double v = rng.uniform();
+      if (v < 0.3) {
+        set(other, std::max(times[other], now) + scale * rng.uniform(0, 0.1));  // later
+      } else if (v < 0.35 && times[other] != kNever) {
+        set(other, now + (times[other] - now) * rng.uniform());  // earlier, not before now
+      } else if (v < 0.36) {
+        set(other, times[top]);  // a tie with another slot
+      }
+      CHECK_TOP(step);
+      was_bucketed = was_bucketed && calendar.bucketed();
+      if (step % 5000 == 0) {
+        ASSERT_TRUE(calendar.consistent()) << "seed " << seed << " step " << step;
+      }
+    }
+    EXPECT_TRUE(was_bucketed) << "the test should run the buckets all along";
+    EXPECT_GE(calendar.tunings(), 3u) << "the first width, and again after each change of scale";
+    // Empty it: every slot to kNever, the top checked as it goes.
+    for (int step = 0; !oracle.empty(); ++step) {
+      set(oracle.begin()->second, kNever);
+      CHECK_TOP(step);
+    }
+#undef CHECK_TOP
   }
 }
 

@@ -148,9 +148,9 @@ TEST(Calendar, BucketsMatchAnOrderedSet) {
     EXPECT_TRUE(calendar.bucketed());
     double scale = 1;
     bool was_bucketed = true;
-    for (int step = 0; step < 400000; ++step) {
-      if (step == 150000) scale = 1e-3;  // events far denser than the width was tuned for
-      if (step == 300000) scale = 1;
+    for (int step = 0; step < 240000; ++step) {
+      if (step == 80000) scale = 1e-3;  // events far denser than the width was tuned for
+      if (step == 160000) scale = 1;
       const std::size_t top = calendar.top_slot();
       const double now = calendar.top_time();
       set(top, kNever);

@@ -19,23 +19,13 @@ void Calendar::refile_far() {
   for (const auto& [block, k] : far_) {
     if (blocks_[block].filed != k) continue;  // stale: the block was filed again since
     if (k <= current_) {  // the current bucket: into the heap with the ring's entries
-      blocks_[block].handle = heap_.push(blocks_[block].least);
-      blocks_[block].filed = kInHeap;
+      enter_heap(block);
       ++entered_;
       continue;
     }
     // The current bucket's place in the ring is also that of bucket current_ + ring_reach(),
     // and its entries are taken after this: that bucket stays far until the next one.
-    if (k - current_ < ring_reach()) {
-      const std::size_t place = ring_place(k);
-      const std::uint32_t n = ring_count_[place];
-      if (n < kBucketEntries) {
-        ring_[place * kBucketEntries + n] = block;
-        ring_count_[place] = n + 1;
-        ++ring_entries_;
-        continue;
-      }
-    }
+    if (k - current_ < ring_reach() && into_ring(block, k)) continue;
     far_[kept++] = {block, k};
     far_first_ = std::min(far_first_, k);
   }
@@ -59,10 +49,8 @@ void Calendar::refill() {
     for (std::uint32_t e = 0; e < n; ++e) __builtin_prefetch(blocks_.data() + entries[e]);
     std::size_t entered = 0;
     for (std::uint32_t e = 0; e < n; ++e) {
-      Block& b = blocks_[entries[e]];
-      if (b.filed != current_) continue;  // stale, or a second entry already taken
-      b.handle = heap_.push(b.least);
-      b.filed = kInHeap;
+      if (blocks_[entries[e]].filed != current_) continue;  // stale, or a second entry taken
+      enter_heap(entries[e]);
       ++entered;
     }
     entered_ += entered;
@@ -108,12 +96,10 @@ void Calendar::tune(double width) {
   current_ = 0;
   for (std::size_t block = 0; block < blocks_.size(); ++block) {
     const std::int64_t k = bucket_of(blocks_[block].least.time);
-    if (k <= current_) {
-      blocks_[block].handle = heap_.push(blocks_[block].least);
-      blocks_[block].filed = kInHeap;
-    } else {
+    if (k <= current_)
+      enter_heap(block);
+    else
       file_later(block, k);
-    }
   }
   refill();
   ++tunings_;

@@ -171,8 +171,7 @@ class Calendar {
     }
     const std::int64_t k = bucket_of(b.least.time);
     if (k <= current_) {
-      b.handle = heap_.push(b.least);
-      b.filed = kInHeap;
+      enter_heap(block);
     } else if (k != b.filed) {
       file_later(block, k);
     }
@@ -198,18 +197,24 @@ class Calendar {
   void file_later(std::size_t block, std::int64_t k) {
     blocks_[block].filed = k;
     if (k == kNeverFiled) return;
-    if (k - current_ <= ring_reach()) {
-      const std::size_t place = ring_place(k);
-      const std::uint32_t n = ring_count_[place];
-      if (n < kBucketEntries) {
-        ring_[place * kBucketEntries + n] = static_cast<std::uint32_t>(block);
-        ring_count_[place] = n + 1;
-        ++ring_entries_;
-        return;
-      }
-    }
+    if (k - current_ <= ring_reach() && into_ring(static_cast<std::uint32_t>(block), k)) return;
     far_.emplace_back(static_cast<std::uint32_t>(block), k);
     far_first_ = std::min(far_first_, k);
+  }
+  /// Adds the block to bucket k's entries in the ring (which reaches k), if its place has room.
+  bool into_ring(std::uint32_t block, std::int64_t k) {
+    const std::size_t place = ring_place(k);
+    const std::uint32_t n = ring_count_[place];
+    if (n == kBucketEntries) return false;
+    ring_[place * kBucketEntries + n] = block;
+    ring_count_[place] = n + 1;
+    ++ring_entries_;
+    return true;
+  }
+  /// Puts a block that is not in the heap there, with its earliest entry.
+  void enter_heap(std::size_t block) {
+    blocks_[block].handle = heap_.push(blocks_[block].least);
+    blocks_[block].filed = kInHeap;
   }
   /// Takes the next buckets until the heap holds a block (or every block is never).
   void refill();

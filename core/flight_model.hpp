@@ -1,5 +1,6 @@
 #pragma once
-/// How particles move between their interactions (DESIGN.md section 2): the one choice of a run.
+/// How particles move between their interactions (core/DESIGN.md, "Particles and flights"): the one
+/// choice of a run.
 namespace carom {
 
 enum class FlightModel {

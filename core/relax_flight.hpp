@@ -1,6 +1,6 @@
 #pragma once
 /// The `relax` flight model: exact flight under gravity plus a linear drag frozen for one fluid
-/// step (ballistic-plus-drag). See DESIGN.md section 2.
+/// step (ballistic-plus-drag). See core/DESIGN.md, "Particles and flights".
 #include <algorithm>
 #include <cmath>
 

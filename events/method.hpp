@@ -1,5 +1,5 @@
 #pragma once
-/// A collision method (DESIGN.md section 8): one way of moving particles and resolving their
+/// A collision method (core/DESIGN.md, "Methods"): one way of moving particles and resolving their
 /// collisions, behind the small interface that the run loop, outputs, checkpoints, analysis,
 /// sweeps and the gas coupling are written against. The event-driven hard-sphere engine
 /// (events/event_driven/) is the first implementation; time-stepped methods (soft spheres,
@@ -62,7 +62,7 @@ class MethodFailure : public std::runtime_error {
 };
 
 /// Particles that leave and enter at a synchronising action: the removal and insertion events of
-/// outflows and inflows (DESIGN.md section 3; events/flow/). The method removes and adds them
+/// outflows and inflows (core/DESIGN.md, "Methods"; events/flow/). The method removes and adds them
 /// after the action: the remaining particles keep their order, the new ones are appended in the
 /// order given, with a flight of gravity alone until the next fluid step.
 struct ParticleChange {

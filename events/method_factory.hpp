@@ -14,7 +14,7 @@
 
 namespace carom {
 
-/// The collision methods (DESIGN.md section 8).
+/// The collision methods (core/DESIGN.md, "Methods").
 enum class MethodKind {
   EventDriven,  ///< Exact flights and binary hard-sphere collisions (events/event_driven/).
   SoftSphere,   ///< Soft-sphere DEM: contact forces at a fixed step (events/soft_sphere/).

@@ -1,6 +1,6 @@
 #pragma once
 /// Tagged bodies: chosen particles whose collision impulses are booked where each method resolves
-/// a collision (DESIGN.md section 7, "mean force on a tagged body in a particle cloud"), by
+/// a collision (core/DESIGN.md, "Analysis": the force on a tagged body in a particle cloud), by
 /// partner: each species, each wall. The impulse booked is exactly what changed the body's
 /// velocity, so m (v(t) - v(0)) equals the booked total to round-off when collisions are the only
 /// forces (no gravity, no gas).

@@ -1,6 +1,7 @@
 #pragma once
-/// The particle <-> gas coupling: the fluid step (DESIGN.md section 5). The kick flights' drag
-/// kicks, which read the flights set here, are fluid/kick_scheme.hpp.
+/// The particle <-> gas coupling: the fluid step (core/DESIGN.md, "The gas and the two time
+/// scales"). The kick flights' drag kicks, which read the flights set here, are
+/// fluid/kick_scheme.hpp.
 ///
 /// At a fluid step at time t (every particle synchronised to t):
 ///   1. each particle's volume is split over the gas cells it overlaps (exact sphere-cell

@@ -1,8 +1,9 @@
 #pragma once
-/// Gas-particle drag closures (DESIGN.md section 5): the drag coefficient K of one particle.
+/// Gas-particle drag closures (core/DESIGN.md, "The gas and the two time scales"): the drag
+/// coefficient K of one particle.
 ///
-/// Conventions (the model of DESIGN.md: the gas feels -eps grad p and -beta (u - v) per unit
-/// volume; a particle feels m g - V_p grad p + K (u - v)):
+/// Conventions (the model of core/DESIGN.md, "The gas and the two time scales": the gas feels -eps
+/// grad p and -beta (u - v) per unit volume; a particle feels m g - V_p grad p + K (u - v)):
 ///  - u is the interstitial gas velocity, v the particle velocity, slip = |u - v|, m/s;
 ///  - Re = eps rho_g d |u - v| / mu_g (the superficial slip eps |u - v| times d / nu);
 ///  - K, kg/s: the drag force on one particle is F = K (u - v); its relaxation time is m / K;

@@ -1,7 +1,7 @@
 #pragma once
-/// The gas grid (DESIGN.md section 5): a regular nx x ny x nz box of cells, each with the volume
-/// open to the gas (cells cut by a cylinder wall hold less). Cell (i, j, k) has index
-/// i + nx (j + ny k) (x fastest), as fluid/porosity.hpp's CellLayout.
+/// The gas grid (core/DESIGN.md, "The gas and the two time scales"): a regular nx x ny x nz box of
+/// cells, each with the volume open to the gas (cells cut by a cylinder wall hold less).
+/// Cell (i, j, k) has index i + nx (j + ny k) (x fastest), as fluid/porosity.hpp's CellLayout.
 #include <algorithm>
 #include <array>
 #include <cmath>

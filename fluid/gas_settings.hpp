@@ -11,7 +11,8 @@
 
 namespace carom {
 
-/// How the gas and the particles act on each other (DESIGN.md section 5).
+/// How the gas and the particles act on each other (core/DESIGN.md, "The gas and the two time
+/// scales").
 enum class CouplingLevel {
   None,    ///< No gas: granular gases, clouds in vacuum.
   OneWay,  ///< The gas moves the particles; the particles neither displace nor push the gas.

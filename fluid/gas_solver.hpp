@@ -1,5 +1,6 @@
 #pragma once
-/// The coarse-grid gas solver (DESIGN.md section 5): volume-averaged incompressible gas,
+/// The coarse-grid gas solver (core/DESIGN.md, "The gas and the two time scales"): volume-averaged
+/// incompressible gas,
 ///   d(eps)/dt + div(eps u) = 0,
 ///   rho_g [d(eps u)/dt + div(eps u u)] = -eps grad p + div(eps mu_g grad u) + eps rho_g g
 ///                                        - beta (u - v_s),

@@ -1,8 +1,8 @@
 #pragma once
-/// The `kick` flight scheme (DESIGN.md section 2): the classic hard-sphere discrete particle
-/// method. Between kicks the particles fly ballistic parabolas under gravity alone; every particle
-/// step dt_p all particles are synchronised and each velocity gets the drag and pressure-gradient
-/// impulse of that step as one explicit (forward Euler) kick,
+/// The `kick` flight scheme (core/DESIGN.md, "Particles and flights"): the classic hard-sphere
+/// discrete particle method. Between kicks the particles fly ballistic parabolas under gravity
+/// alone; every particle step dt_p all particles are synchronised and each velocity gets the drag
+/// and pressure-gradient impulse of that step as one explicit (forward Euler) kick,
 ///   v_i <- v_i + dt_p [a_i(v_i) - g] = v_i + dt_p [(u_i - v_i) / tau_i - grad p_i / rho_p],
 /// with a_i(v) = drive_i - rate_i v the particle's flight of the current fluid step (u_i, K_i =
 /// m_i rate_i, grad p_i frozen at the step's start by GasCoupling::step; tau_i = 1 / rate_i).

@@ -1,9 +1,10 @@
 #pragma once
-/// Porosity mapping (DESIGN.md section 5): each particle's volume is split over the gas cells it
-/// overlaps by exact sphere-cell volumes (fluid/overlap.hpp), each cell's open volume is the part
-/// inside the walls, and eps_c = 1 - solid_c / open_c. The split weights double as the
-/// interpolation weights of cell quantities to the particle, so the drag reaction on the gas is
-/// exactly minus the drag on the particles and the mapped solid volume is the particles' volume.
+/// Porosity mapping (core/DESIGN.md, "The gas and the two time scales"): each particle's volume is
+/// split over the gas cells it overlaps by exact sphere-cell volumes (fluid/overlap.hpp), each
+/// cell's open volume is the part inside the walls, and eps_c = 1 - solid_c / open_c. The split
+/// weights double as the interpolation weights of cell quantities to the particle, so the drag
+/// reaction on the gas is exactly minus the drag on the particles and the mapped solid volume is
+/// the particles' volume.
 #include <array>
 #include <span>
 #include <vector>

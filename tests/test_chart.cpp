@@ -1,7 +1,7 @@
 // `carom chart` run as a user runs it, on a small elastic gas (330 spheres, phi = 0.1) whose
 // collision frequency kinetic theory knows: the event-driven reference, Monte Carlo with the
 // Enskog contact value, Monte Carlo without it (which must come out low by 1 - 1/g0 = 23 %,
-// Enskog's contact value at phi = 0.1 being g0 = 1.30316, VALIDATION.md), and soft spheres.
+// Enskog's contact value at phi = 0.1 being g0 = 1.30316, tests/VALIDATION.md), and soft spheres.
 // Every number of the chart's table is recomputed here from the cases' own summary.json and
 // result.json; the report must name the cheapest variant within the tolerance found the same
 // way. Then: a second run changes nothing, the figures are drawn, and mistakes are reported.

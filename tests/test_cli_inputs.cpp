@@ -1,4 +1,4 @@
-// The `carom` command against what a new user and a hostile input try (issue 20): inputs that
+// The `carom` command against what a new user and a hostile input try: inputs that
 // are the wrong kind of file, a negative seed, a signal while the bed settles before t = 0, an
 // output that would fill the disk, --overwrite over an earlier run's figures, `carom info` as a
 // summary, and report.md saying only what applies to the scene.

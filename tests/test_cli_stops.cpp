@@ -1,4 +1,4 @@
-// Stop signals and the output-size check where they used to be missed (issue 20): a signal
+// Stop signals and the output-size check where they used to be missed: a signal
 // during a long placement (`carom run`, `carom check`, `carom sweep --dry-run`) was honoured only
 // when the placement ended; `carom resume DIR --end T` and `carom sweep --dry-run` did not
 // estimate the output.

@@ -96,13 +96,13 @@ TEST(Collapse, BouncingBallWithoutTcModelThrowsDiagnostic) {
               });
 }
 
-// The low-speed rule on both sides of the collapse (issue 18, stability_collapse.toml): the same
-// ball with impacts slower than 0.05 m/s elastic ends up bouncing elastically at about that
-// speed (flights of ~2 v / g = 0.01 s, ~600 of them to t = 6 s, far below 1000 within any
-// window) and finishes; the rule is what saves it, since BouncingBallWithoutTcModelThrowsDiagnostic
-// above collapses at 3.635 s. With a threshold of 1e-12 m/s the bounces still shrink to flights
-// of ~2e-13 s, 1000 of which fit in the automatic window (1e-9 d / sqrt(g d) = 3.2e-10 s): the
-// detector must fire, and its message must say that the rule is on, never advise turning it on.
+// The low-speed rule on both sides of the collapse (the collapse map, stability_collapse.toml): the
+// same ball with impacts slower than 0.05 m/s elastic ends up bouncing elastically at about that
+// speed (flights of ~2 v / g = 0.01 s, ~600 of them to t = 6 s, far below 1000 within any window)
+// and finishes; the rule is what saves it, since BouncingBallWithoutTcModelThrowsDiagnostic above
+// collapses at 3.635 s. With a threshold of 1e-12 m/s the bounces still shrink to flights of ~2e-13
+// s, 1000 of which fit in the automatic window (1e-9 d / sqrt(g d) = 3.2e-10 s): the detector must
+// fire, and its message must say that the rule is on, never advise turning it on.
 TEST(Collapse, LowSpeedRuleStopsTheCollapseOnlyAboveTheBounceSpeedThatCollapses) {
   test::expect_finishes(20, [] {
     EventDrivenOptions good;
@@ -133,7 +133,7 @@ TEST(Collapse, LowSpeedRuleStopsTheCollapseOnlyAboveTheBounceSpeedThatCollapses)
 // With the TC model on but a contact time far too short (1e-9 s) for the detector's window
 // (1e-5 s, 1000 collisions), the ball's elastic rattle on the floor (period ~ t_c) is caught.
 // The message must say that the TC model is on and what its setting does, never advise turning
-// it on (issue 20: it did).
+// it on (it once did).
 TEST(Collapse, DiagnosticWithTcModelOnDoesNotAdviseTurningItOn) {
   test::expect_finishes(10, [] {
     EventDrivenOptions options;
@@ -153,7 +153,7 @@ TEST(Collapse, DiagnosticWithTcModelOnDoesNotAdviseTurningItOn) {
   });
 }
 
-// Lasting contacts (issue 18): the 27-grain column of SettlingColumnFinishesWithTcModel, at
+// Lasting contacts: the 27-grain column of SettlingColumnFinishesWithTcModel, at
 // rest on the floor under the TC model (t_c = 1e-3 s), run on: its collision frequency per
 // particle climbs as the gaps between resting grains close. The monitor measures the mean
 // frequency over windows of 10 collisions per particle; the run is driven across the limit both

@@ -1,4 +1,5 @@
-// Homogeneous cooling of smooth inelastic spheres (e = 0.9) against Haff's law (VALIDATION.md):
+// Homogeneous cooling of smooth inelastic spheres (e = 0.9) against Haff's law
+// (tests/VALIDATION.md, "Homogeneous cooling"):
 //   T(t) = T0 / (1 + t/t0)^2,  t0 = 6 / ((1 - e^2) omega(T0)),
 // with omega the Enskog-Carnahan-Starling collision frequency: t0 = 17.8964 for m = s = T0 = 1,
 // phi = 0.1.
@@ -39,11 +40,11 @@ double mean_flow_energy(const EventDrivenEngine& sim) {
 
 // 500 spheres at phi = 0.1 in a periodic cube of edge 13.8 = 15 mean free paths
 // (lambda = 1/(sqrt(2) pi n s^2 g0) = 0.90), well under the ~25 lambda where the homogeneous
-// state of e = 0.9 becomes unstable (VALIDATION.md). The gas is first equilibrated elastically
-// for 10 collisions per particle (the FCC start has no pair at contact, while Haff's law uses the
-// equilibrium contact value g0), then continued bit for bit with e = 0.9 through the restoring
-// constructor, and T(t) is compared with Haff's law at t = t0/2, t0 and 2 t0 (T falls to T0/9).
-// Tolerance 4 % on T(t)/T_Haff(t), averaged over 6 independent runs:
+// state of e = 0.9 becomes unstable (tests/VALIDATION.md). The gas is first equilibrated
+// elastically for 10 collisions per particle (the FCC start has no pair at contact, while Haff's
+// law uses the equilibrium contact value g0), then continued bit for bit with e = 0.9 through the
+// restoring constructor, and T(t) is compared with Haff's law at t = t0/2, t0 and 2 t0 (T falls to
+// T0/9). Tolerance 4 % on T(t)/T_Haff(t), averaged over 6 independent runs:
 //  - statistics: up to 2 t0 each run has ~1.4e4 collisions; the cooled temperature is set by
 //    the time integral of the cooling rate whose relative noise is ~1/sqrt(collisions) ~ 1 %
 //    per run; measured scatter between seeds is 1-2 %, so ~0.7 % for the average of 6;

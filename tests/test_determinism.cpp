@@ -1,6 +1,6 @@
-// Determinism (DESIGN.md section 6, STYLE.md): the same system run twice gives bit-identical
-// states, and EventDrivenEngine::state() + the restoring constructor continue bit for bit like the
-// uninterrupted run. Exact (bitwise) comparison: anything else is not determinism.
+// Determinism (core/DESIGN.md, "Events and the calendar"): the same system run twice gives
+// bit-identical states, and EventDrivenEngine::state() + the restoring constructor continue bit for
+// bit like the uninterrupted run. Exact (bitwise) comparison: anything else is not determinism.
 #include <gtest/gtest.h>
 
 #include <cstring>

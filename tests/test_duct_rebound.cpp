@@ -1,4 +1,4 @@
-// The single-bead rebound of the convergent-duct study (issue 17, section 2; Fohanno &
+// The single-bead rebound of the convergent-duct study (Fohanno &
 // Oesterle 2000): a 3 mm glass bead hits a glass wall at V1 = 3.5 m/s at the study's impact
 // angles (from the wall) 17.6, 26.6, 40.04 and 57.8 degrees, without spin, in an event-driven
 // run, under the static/kinetic Coulomb law with e = 0.96, mu_k = 0.12 and mu_s = 0.20

@@ -1,5 +1,6 @@
 // Equilibrium collision frequency of the elastic hard-sphere fluid against Enskog theory with
-// the Carnahan-Starling contact value (VALIDATION.md): omega = 4 n s^2 g0 sqrt(pi T / m).
+// the Carnahan-Starling contact value (tests/VALIDATION.md, "Elastic hard-sphere gas"):
+// omega = 4 n s^2 g0 sqrt(pi T / m).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,7 +39,7 @@ RateResult measure_rate(double phi, std::size_t count, double equilibrate_per_pa
   return {measured, test::enskog_collision_rate(density, 1.0, phi, temperature, 1.0), collisions};
 }
 
-// Reference: VALIDATION.md table (omega = 1.76454 at phi = 0.1, 10.0666 at phi = 0.3 for
+// Reference: tests/VALIDATION.md table (omega = 1.76454 at phi = 0.1, 10.0666 at phi = 0.3 for
 // m = s = T = 1; the test recomputes it with the measured T, which is constant to round-off).
 // Tolerance 1 %, made of:
 //  - Carnahan-Starling vs the exact contact value: <= 0.2 % at phi <= 0.3 (0.4 % at 0.45);

@@ -53,10 +53,11 @@ double reference_velocity(double t_end) {
   return v;
 }
 
-// Terminal velocity 3.706 m/s (VALIDATION.md: 0.5 mm glass in air, Schiller-Naumann) within
-// 0.5 % with both flight models, after 4 s (ten relaxation times: the remaining approach is
-// below 1e-4). The velocity history follows the RK4 reference within 1 %: the drag coefficient
-// is frozen for each 1 ms fluid step, a first-order error of order dt / tau = 0.3 %.
+// Terminal velocity 3.706 m/s (tests/VALIDATION.md, "Settling and minimum fluidization": 0.5 mm
+// glass in air, Schiller-Naumann) within 0.5 % with both flight models, after 4 s (ten relaxation
+// times: the remaining approach is below 1e-4). The velocity history follows the RK4 reference
+// within 1 %: the drag coefficient is frozen for each 1 ms fluid step, a first-order error of order
+// dt / tau = 0.3 %.
 class SettlingBead : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SettlingBead, ReachesTerminalVelocityAndFollowsTheForceBalance) {
@@ -207,18 +208,18 @@ TEST(KickFlights, UnstableStepIsDetectedAndExplained) {
 }
 
 // The limit of kicks that see a drag refreshed before each (dt_p >= the fluid step) is not 2 tau
-// but 2 m / (dF/ds) (issue 18; stability_kick.toml): the kicks are explicit Euler steps of the
-// nonlinear drag F = K(s) s, and a departure from the terminal velocity is multiplied by
-// 1 - dt_p (1/m) dF/ds per kick. For the 0.5 mm bead at its terminal velocity (Re = 124):
-// tau = 0.378 s, 2 tau = 0.756 s, 2 m/(dF/ds) = 0.487 s (Schiller-Naumann: dF/ds = K (1 +
-// 0.15 * 1.687 Re^0.687)). Oracle, without carom: the same explicit map of the reference's drag
-// law converges at 0.40 s and at 0.55 s is left in a cycle that never reaches v_t; carom must
-// run the first to the end and refuse the second (which a 2 tau check let through) with a
-// message naming a largest stable step below 0.55 s and at least that at v_t less 20 %
-// (the oscillation the refusal cuts short may overshoot v_t, where the limit is lower). The
-// check is local, at the state reached: from rest the first kick overshoots v_t (to 3.92 m/s
-// at 0.40 s, where the limit is 0.471 s), so steps a little below 0.487 s (0.45 s: the limit
-// falls to 0.438 s on the way) are refused although the map would still converge.
+// but 2 m / (dF/ds) (the kick stability map, stability_kick.toml): the kicks are explicit Euler
+// steps of the nonlinear drag F = K(s) s, and a departure from the terminal velocity is multiplied
+// by 1 - dt_p (1/m) dF/ds per kick. For the 0.5 mm bead at its terminal velocity (Re = 124): tau =
+// 0.378 s, 2 tau = 0.756 s, 2 m/(dF/ds) = 0.487 s (Schiller-Naumann: dF/ds = K (1 + 0.15 * 1.687
+// Re^0.687)). Oracle, without carom: the same explicit map of the reference's drag law converges at
+// 0.40 s and at 0.55 s is left in a cycle that never reaches v_t; carom must run the first to the
+// end and refuse the second (which a 2 tau check let through) with a message naming a largest
+// stable step below 0.55 s and at least that at v_t less 20 % (the oscillation the refusal cuts
+// short may overshoot v_t, where the limit is lower). The check is local, at the state reached:
+// from rest the first kick overshoots v_t (to 3.92 m/s at 0.40 s, where the limit is 0.471 s), so
+// steps a little below 0.487 s (0.45 s: the limit falls to 0.438 s on the way) are refused although
+// the map would still converge.
 TEST(KickFlights, RefreshedDragIsLimitedByItsSlopeNotTwiceTau) {
   const double d = 5e-4, rho_p = 2500.0, rho_g = 1.2, mu = 1.8e-5, g = 9.81;
   auto accel = [&](double v) {  // downward speed v > 0

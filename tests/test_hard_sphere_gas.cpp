@@ -12,9 +12,9 @@ namespace {
 // own invariants at every collision (check_invariants); independently, at 100 sample times an
 // all-pairs O(N^2) scan of EventDrivenEngine::position(i) looks for any overlap.
 // References and tolerances:
-//  - overlap <= 1e-10 of the contact distance: the engine's promise (DESIGN.md section 3);
-//    a missed collision shows up as an overlap of order (relative speed x sample interval), i.e.
-//    1e-2..1e-1, ten orders above the tolerance.
+//  - overlap <= 1e-10 of the contact distance: the engine's promise (core/DESIGN.md, "Events
+//    and the calendar"); a missed collision shows up as an overlap of order (relative speed x
+//    sample interval), i.e. 1e-2..1e-1, ten orders above the tolerance.
 //  - kinetic energy: elastic smooth collisions conserve it exactly; each collision adds
 //    round-off of a few ulps of the pair's energy, a random walk over ~2.5e4 collisions gives
 //    ~1e-14 of the total, so 1e-10 (the bound asked for) has four decades of margin and fails

@@ -1,4 +1,4 @@
-// What a new user and a hostile input find (issue 20), checked at the scene layer: every
+// What a new user and a hostile input find, checked at the scene layer: every
 // mistake is refused at once, with a message that says what is wrong and what is allowed: a
 // directory or a sweep file given as the scene, a negative seed, a value a sweep file set, a
 // fill its region cannot hold (refused before anything is allocated), an output that would

@@ -1,5 +1,5 @@
 // Bidisperse elastic hard-sphere mixture: collision frequency per species pair against Enskog
-// theory with the mixture contact values (VALIDATION.md):
+// theory with the mixture contact values (tests/VALIDATION.md, "Mixtures"):
 //   nu_ij = n_j pi s_ij^2 g_ij sqrt(8 T / (pi mu_ij)),  s_ij = (d_i + d_j)/2,
 //   g_ij = 1/(1-phi) + 3 h xi2/(1-phi)^2 + 2 h^2 xi2^2/(1-phi)^3,  h = d_i d_j/(d_i + d_j),
 //   xi2 = (pi/6) sum_k n_k d_k^2.

@@ -80,13 +80,14 @@ DiluteGas dilute_gas(std::size_t count, std::uint64_t gas_seed, std::uint64_t mc
 
 // Dilute elastic gas, phi = 0.005 (g0 = 1.0126), 4000 particles in a periodic cube of edge
 // 81.2 d, 8 collision cells of 500 particles. Kinetic theory: omega = 4 n d^2 sqrt(pi T/m)
-// (VALIDATION.md, Boltzmann limit; the MC method has no excluded volume, so no g0).
-// Reference: the integral of omega(T(t)) over the run (T sampled 50 times). Tolerance 2 %:
-// the count has ~1e5 travelling collisions, relative Poisson error 0.3 % (measured scatter over
-// seeds is about that); the time step (nu dt = 0.1) biases nothing (exact Poisson timing within
-// a step); the Gaussian partner fitted to 500 particles heats the gas by ~2e-4 of its energy
-// per collision (0.09/k, engine.hpp), which the stretch-wise reference follows. The mean_velocity form's count is
-// printed beside it; it is not a test of that form (its gas cools: next test).
+// (tests/VALIDATION.md, "Monte Carlo collisions": Boltzmann limit; the MC method has no excluded
+// volume, so no g0). Reference: the integral of omega(T(t)) over the run (T sampled 50 times).
+// Tolerance 2 %: the count has ~1e5 travelling collisions, relative Poisson error 0.3 % (measured
+// scatter over seeds is about that); the time step (nu dt = 0.1) biases nothing (exact Poisson
+// timing within a step); the Gaussian partner fitted to 500 particles heats the gas by ~2e-4 of its
+// energy per collision (0.09/k, engine.hpp), which the stretch-wise reference follows. The
+// mean_velocity form's count is printed beside it; it is not a test of that form (its gas cools:
+// next test).
 TEST(MonteCarloGas, CollisionFrequencyMatchesKineticTheory) {
   auto [gas, options, n] = dilute_gas(4000, 21, 5);
   MonteCarloEngine mc(gas, options);
@@ -144,12 +145,12 @@ TEST(MonteCarloGas, MeanPartnersCollideAtTheMeanSpeedRate) {
   EXPECT_NEAR(ratio, 1.0, 0.04);
 }
 
-// The measurement that chose the default frequency (VALIDATION.md): in an elastic gas the
-// paper's form nu = sqrt(2) pi (2R)^2 |V1 - <V0>| n has the right mean rate for a Maxwellian
-// (sqrt(2) <|V1|> = <|V1 - V0|>), but it picks collisions by |V1| and partners without the
-// weight |V1 - V0|, so energy flows out of the gas: T falls by more than 20 % within 10
-// collisions per particle (measured: 0.87 after 1, 0.29 after 15). The relative-speed form
-// keeps T within 5 % (its random walk and the 0.09/k heating of a cell of k = 500 particles).
+// The measurement that chose the default frequency (tests/VALIDATION.md, "Monte Carlo collisions"):
+// in an elastic gas the paper's form nu = sqrt(2) pi (2R)^2 |V1 - <V0>| n has the right mean rate
+// for a Maxwellian (sqrt(2) <|V1|> = <|V1 - V0|>), but it picks collisions by |V1| and partners
+// without the weight |V1 - V0|, so energy flows out of the gas: T falls by more than 20 % within 10
+// collisions per particle (measured: 0.87 after 1, 0.29 after 15). The relative-speed form keeps T
+// within 5 % (its random walk and the 0.09/k heating of a cell of k = 500 particles).
 TEST(MonteCarloGas, MeanVelocityFormCoolsAnElasticGas) {
   GranularGasSpec spec;
   spec.count = 4000;
@@ -186,7 +187,8 @@ TEST(MonteCarloGas, MeanVelocityFormCoolsAnElasticGas) {
 // whole pair's loss booked on one particle) cools twice as fast and fails by > 30 %.
 // Cells: with 8 cells of 500 particles T(t0) comes out 7 % above Haff (mean of 6 seeds): each
 // cell's mean velocity random-walks (momentum is not conserved either) and collisions with
-// partners that share the cell mean never dissipate that mean flow; README says so.
+// partners that share the cell mean never dissipate that mean flow (as
+// scenarios/guides/choosing_a_method.md says).
 TEST(MonteCarloCooling, HaffLaw) {
   const double e = 0.9;
   const double check_times[3] = {0.5, 1.0, 2.0};
@@ -390,7 +392,7 @@ TEST(MonteCarloActions, StepsLandOnActions) {
 
 // contact_value = "enskog" at phi = 0.1: 4000 particles, the whole box one cell (so the cell's
 // solid fraction is exactly 0.1 and g0 = 1.30316, no noise from small cells). Reference:
-// VALIDATION.md's Enskog-Carnahan-Starling omega = 1.76454 at T = 1, times sqrt(T) of each
+// tests/VALIDATION.md's Enskog-Carnahan-Starling omega = 1.76454 at T = 1, times sqrt(T) of each
 // stretch. Tolerance 2 %: ~4e4 travelling collisions (0.5 %; measured ratio 0.9905); T's random
 // walk is followed stretch by stretch.
 TEST(MonteCarloGas, EnskogContactValueGivesTheEnskogRate) {

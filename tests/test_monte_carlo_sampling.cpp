@@ -158,7 +158,7 @@ TEST(MonteCarloSampling, ImpactPointUniformOverCrossSection) {
   EXPECT_LT((side / n).norm(), 4.5 * std::sqrt(0.5 * 0.5 / n) * 1.5);
 }
 
-// For one size the mixture contact value is Carnahan-Starling's, and VALIDATION.md's table.
+// For one size the mixture contact value is Carnahan-Starling's, and tests/VALIDATION.md's table.
 TEST(MonteCarloSampling, ContactValueIsCarnahanStarlingForOneSize) {
   for (double phi : {0.1, 0.2, 0.3, 0.4}) {
     const double d = 1.0, xi2 = phi / d;  // xi2 = (pi/6) n d^2 = phi / d for one size

@@ -7,7 +7,8 @@
 // particle-wall couple, the first time its gap falls below -tol by conservative advancement: it
 // steps by (gap + tol) / L, where L bounds |d gap / dt| on the horizon, so it can never step
 // over a contact. Tolerance tol = 1e-10 of the contact distance: the overlap the engine promises
-// never to exceed (DESIGN.md section 3); predicted times carry round-off ~1e-15, i.e. gaps ~1e-14.
+// never to exceed (core/DESIGN.md, "Events and the calendar"); predicted times carry round-off
+// ~1e-15, i.e. gaps ~1e-14.
 //   No missed event: the engine's first collision is no later than the first overlap.
 //   No spurious event: the gap of the engine's collision partner is zero (|gap| <= 1e-9 contact)
 //   at the predicted time, and approaching.

@@ -89,8 +89,8 @@ TEST(Recommend, SolidFractionAroundAParticleIsUnbiasedInADiluteGas) {
 TEST(Recommend, ContactTimeAgainstMeanFreeTime) {
   // Mean free time (Enskog): omega = 4 n d^2 g0 sqrt(pi / 3) v with n = 6 phi / (pi d^3),
   // g0(0.3) = 2.4781, v = 1 m/s: 1.72e-4 s. Hertz contact time of two 1 mm beads at 1 m/s:
-  // 1.02e-4 s at E = 1e7 Pa (VALIDATION.md), scaling as E^-2/5: 2.6e-6 s at E = 1e11 Pa.
-  // Contacts lasting 0.6 of the mean free time are not binary; 0.015 are.
+  // 1.02e-4 s at E = 1e7 Pa (tests/VALIDATION.md, "Soft-sphere contacts"), scaling as E^-2/5:
+  // 2.6e-6 s at E = 1e11 Pa. Contacts lasting 0.6 of the mean free time are not binary; 0.015 are.
   const Scene soft = bead_gas(1e7), stiff = bead_gas(1e11);
   const SceneNumbers a = scene_numbers(soft), b = scene_numbers(stiff);
   // The scene's rms speed (the fill draws a Maxwellian of that rms and removes its mean motion).
@@ -100,7 +100,7 @@ TEST(Recommend, ContactTimeAgainstMeanFreeTime) {
   const double g0 = (1 - a.solid_fraction_seen / 2) / std::pow(1 - a.solid_fraction_seen, 3);
   const double n = 6 * a.solid_fraction_seen / (M_PI * 1e-9);
   EXPECT_NEAR(a.mean_free_time, 1.0 / (4 * n * 1e-6 * g0 * std::sqrt(M_PI / 3.0) * a.speed), 1e-12);
-  // VALIDATION.md's example is this pair (E = 1e7 Pa, nu = 0.3, the default) at 1 m/s; t_c
+  // tests/VALIDATION.md's example is this pair (E = 1e7 Pa, nu = 0.3, the default) at 1 m/s; t_c
   // scales as v^-1/5.
   EXPECT_NEAR(a.contact_time, 1.0195850e-4 * std::pow(a.speed, -0.2), 1e-10);
   EXPECT_GT(a.contact_time / a.mean_free_time, kContactShare);

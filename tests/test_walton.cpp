@@ -28,7 +28,7 @@ Vec3 contact_velocity(const Sphere& s1, const Sphere& s2, const Vec3& n) {
   return s1.velocity - s2.velocity - (s1.radius * s1.spin + a2 * s2.spin).cross(n);
 }
 
-// Reference: VALIDATION.md, "Collision law - exact cases" (both rows, every column).
+// Reference: tests/VALIDATION.md, "Collision law: exact cases" (both rows, every column).
 // Tolerance 1e-12: the values are exact decimals computed from the law with a handful of
 // floating-point operations on O(1) numbers, so round-off is ~1e-15; any wrong factor
 // (2/7, 1+e, the sliding beta) changes a column at the 1e-2 level.
@@ -88,13 +88,13 @@ Vec3 random_unit(Rng& rng) {
   }
 }
 
-// Exact identities of the law (VALIDATION.md) on 2e5 random collisions: sizes 0.05..2 m,
-// masses 0.01..100 kg (so m12 ranges over 4 decades), e, mu in [0, 1], beta0 in [-1, 1], one
-// collision in four against a wall (a ContactBody with zero inverse mass and inertia).
-// Tolerance: every identity is exact algebra evaluated in double precision with O(10)
-// operations, so errors are a few ulps of the largest term: 1e-12 relative to the natural
-// scale of each quantity (momentum scale m|v|, energy scale KE) leaves 3 decades of margin
-// and still fails on any wrong coefficient (errors would be O(1) relative).
+// Exact identities of the law (tests/VALIDATION.md, "Collision law: identities") on 2e5 random
+// collisions: sizes 0.05..2 m, masses 0.01..100 kg (so m12 ranges over 4 decades), e, mu in [0, 1],
+// beta0 in [-1, 1], one collision in four against a wall (a ContactBody with zero inverse mass and
+// inertia). Tolerance: every identity is exact algebra evaluated in double precision with O(10)
+// operations, so errors are a few ulps of the largest term: 1e-12 relative to the natural scale of
+// each quantity (momentum scale m|v|, energy scale KE) leaves 3 decades of margin and still fails
+// on any wrong coefficient (errors would be O(1) relative).
 TEST(WaltonIdentities, RandomCollisions) {
   Rng rng(2024);
   int sticking = 0, sliding = 0, walls = 0;

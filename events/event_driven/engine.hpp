@@ -1,6 +1,7 @@
 #pragma once
 /// The event-driven hard-sphere engine: exact flights and binary collisions from event to event
-/// (DESIGN.md sections 2-4), the first CollisionMethod.
+/// (core/DESIGN.md, "Particles and flights", "Events and the calendar", "Collision laws and
+/// collapse"), the first CollisionMethod.
 ///
 /// Its pieces, one file each:
 ///   engine.cpp                 construction, global events (actions), the loop, the state

@@ -1,7 +1,8 @@
 #pragma once
-/// The collapse detector of the event-driven engine (DESIGN.md section 4): inelastic collapse
-/// (infinitely many collisions in finite time) or particles resting in lasting contact make the
-/// event rate diverge; the detector stops such a run with a diagnostic instead of letting it hang.
+/// The collapse detector of the event-driven engine (core/DESIGN.md, "Collision laws and
+/// collapse"): inelastic collapse (infinitely many collisions in finite time) or particles resting
+/// in lasting contact make the event rate diverge; the detector stops such a run with a diagnostic
+/// instead of letting it hang.
 #include <cstdint>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-/// Inflow and outflow (DESIGN.md section 3: insertion and removal events), the same for every
+/// Inflow and outflow (core/DESIGN.md, "Methods": the flow step), the same for every
 /// collision method: at each flow step (a synchronising action, so every particle's state is as
 /// of the step's time) the particles beyond an outlet plane leave, and the particles each inflow
 /// owes by its mass flow rate since the start enter, placed at random without overlap in a slab

@@ -1,6 +1,8 @@
 #pragma once
 /// The one decision of which law a collision obeys: the pair's (or wall's) Walton law, unless a
-/// collapse remedy (the TC model, elastic slow impacts) replaces it. Every method calls this.
+/// collapse remedy (the TC model, elastic slow impacts) replaces it. The event-driven method calls
+/// this; the Monte Carlo method applies the low-speed rule to its wall impacts itself
+/// (particle_step.cpp); soft spheres use neither remedy.
 #include <cmath>
 
 #include "core/contact_law.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 /// The Monte Carlo collision method (Oesterle & Petitjean 1991/1993; Sommerfeld 2001;
-/// DESIGN.md section 8), the third CollisionMethod: particles move in time steps on exact
+/// core/DESIGN.md, "Methods"), the third CollisionMethod: particles move in time steps on exact
 /// flights; each step, every cell of a collision grid records the number density and velocity
 /// statistics of each species, and every particle collides, as a Poisson process of the
 /// collision frequency nu, with fictitious partners drawn from the statistics of its cell.

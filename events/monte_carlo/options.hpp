@@ -63,9 +63,9 @@ struct MonteCarloOptions {
   /// (MethodFailure "monte_carlo_step_too_long"): the partner statistics are frozen over a step.
   double max_collisions_per_step = 1.0;
   /// Wall impacts with a normal speed below this are elastic, m/s (the collapse remedy of
-  /// DESIGN.md section 4: a particle resting on a floor under gravity would otherwise bounce
-  /// infinitely often in a step). < 0 (default): |g| dt_p / 20, so a bounce it leaves lasts at
-  /// least dt_p / 10 (0 without gravity).
+  /// core/DESIGN.md, "Collision laws and collapse": a particle resting on a floor under gravity
+  /// would otherwise bounce infinitely often in a step). < 0 (default): |g| dt_p / 20, so a bounce
+  /// it leaves lasts at least dt_p / 10 (0 without gravity).
   double elastic_below_speed = -1.0;
   /// Ballistic (gravity only) or Relax (each particle's RelaxFlight of the fluid step, flown
   /// exactly). Kick scenes fly ballistic here; the kicks are the gas coupling's.

@@ -167,8 +167,9 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
       }
       const Vec3 normal = system_.walls[wall].contact_normal(r);
       Vec3 wall_velocity = Vec3::Zero(), wall_spin = Vec3::Zero();
-      // Slow impacts are elastic (the collapse remedy of DESIGN.md section 4): a particle at
-      // rest on a floor would otherwise bounce infinitely often within a step.
+      // Slow impacts are elastic (the collapse remedy of core/DESIGN.md, "Collision laws and
+      // collapse"): a particle at rest on a floor would otherwise bounce infinitely often within a
+      // step.
       ContactLaw law = system_.materials.wall(s, wall);
       if (std::abs(v.dot(normal)) < elastic_below_speed_) law.restitution = 1.0;
       const CollisionOutcome outcome =

@@ -1,6 +1,6 @@
 #pragma once
-/// The soft-sphere DEM method (DESIGN.md section 8): particles overlap slightly at contacts and
-/// feel spring-dashpot forces (contact_model.hpp), integrated with velocity Verlet at a fixed
+/// The soft-sphere DEM method (core/DESIGN.md, "Methods"): particles overlap slightly at contacts
+/// and feel spring-dashpot forces (contact_model.hpp), integrated with velocity Verlet at a fixed
 /// step, contacts found on Verlet lists (neighbour_list.hpp). A second implementation of
 /// CollisionMethod, on the same scenes, outputs and gas coupling as the event-driven method.
 ///

@@ -61,16 +61,16 @@ std::vector<double> species_granular_temperature(const LocalFields& fields);
 /// Kinetic-theory collision frequencies in one cell, an S x S row-major matrix, 1/s: entry
 /// (s, t) is the rate at which one particle of species s meets particles of species t,
 ///   nu_st = n_t pi d_st^2 g_st sqrt(8 (theta_s + theta_t)/pi),   d_st = (d_s + d_t)/2.
-/// This is VALIDATION.md's nu_ij = n_j pi s_ij^2 g_ij sqrt(8 T/(pi mu_ij)) for species at their
-/// own temperatures T_s = m_s theta_s: the mean relative speed of two Maxwellians with velocity
-/// variances theta_s and theta_t per component is sqrt(8 (theta_s + theta_t)/pi), and for equal
-/// T, theta_s + theta_t = T/m_s + T/m_t = T/mu_st. n from the cell's counts and open volume, d_s
-/// the species' mean diameter, g_st the BMCSL contact value of enskog.hpp at the cell's number
-/// densities. n_s nu_st = n_t nu_ts holds by construction (g_st = g_ts).
-/// A species with fewer than 2 particles in the cell takes its temperature from
-/// fallback_temperature (m^2/s^2, e.g. species_granular_temperature; 0 where that is NaN).
-/// The whole matrix is NaN where the open volume is not positive or the centre-binned solid
-/// fraction reaches 1 (cells too small for centre binning).
+/// This is tests/VALIDATION.md's ("Mixtures") nu_ij = n_j pi s_ij^2 g_ij sqrt(8 T/(pi mu_ij)) for
+/// species at their own temperatures T_s = m_s theta_s: the mean relative speed of two Maxwellians
+/// with velocity variances theta_s and theta_t per component is sqrt(8 (theta_s + theta_t)/pi), and
+/// for equal T, theta_s + theta_t = T/m_s + T/m_t = T/mu_st. n from the cell's counts and open
+/// volume, d_s the species' mean diameter, g_st the BMCSL contact value of enskog.hpp at the cell's
+/// number densities. n_s nu_st = n_t nu_ts holds by construction (g_st = g_ts). A species with
+/// fewer than 2 particles in the cell takes its temperature from fallback_temperature (m^2/s^2,
+/// e.g. species_granular_temperature; 0 where that is NaN). The whole matrix is NaN where the open
+/// volume is not positive or the centre-binned solid fraction reaches 1 (cells too small for centre
+/// binning).
 std::vector<double> cell_collision_frequencies(const LocalFields& fields, std::size_t cell,
                                                const std::vector<double>& fallback_temperature);
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Which method is the fastest for the same error on a dilute elastic gas (issue 18's crossover):
+"""Which method is the fastest for the same error on a dilute elastic gas (the methods' crossover):
 the CPU cost per simulated collision time of the event-driven, soft-sphere and Monte Carlo
 methods against the particle count N and the solid fraction phi.
 

@@ -1,6 +1,6 @@
 #!/bin/bash
 # Smallenburg's EDMD ("Single") alone: its collisions per CPU second at N particles, phi = 0.40,
-# for comparing its fall-off with N against carom_bench's (issue 19, goal 1).
+# for comparing its fall-off with N against carom_bench's (the large-N speed goal).
 #   tests/bench/edmd_rate.sh EDMD_BINARY N K TEQ
 # The peer is built outside this repository as tests/bench/alternate_peer.sh's header says. An
 # FCC lattice (edmd_fcc.sh) is run for TEQ units of EDMD's time (about 10

@@ -1,5 +1,5 @@
 // carom_mc_bench: the Monte Carlo method against the event-driven one on a dilute elastic gas
-// (issue 16): the same periodic gas, the same simulated time, wall time of each, and the error
+// the same periodic gas, the same simulated time, wall time of each, and the error
 // of the collision frequency (against Boltzmann's, the event-driven one over Enskog's g0) and
 // of the velocity variance (elastic: it must stay at T0; the event-driven method keeps it to
 // round-off). Usage: carom_mc_bench --n 100000 --phi 0.001 --collisions 3 [--skip-ed] [--cells K]

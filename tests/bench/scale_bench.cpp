@@ -1,8 +1,8 @@
 // carom_scale_bench: how much of its small-system speed the hard-sphere fluid keeps at a large
-// N (issue 19, goal 1), measured in one process: both systems are built and equilibrated, then
-// timed in alternating windows of the same number of collisions, each pair of windows giving
-// one ratio. The host's drift (it moves single five-minute runs by 15 %) then hits both sides
-// of each ratio alike, as alternating runs of two binaries do.
+// N (the large-N speed goal), measured in one process: both systems are built and equilibrated,
+// then timed in alternating windows of the same number of collisions, each pair of windows giving
+// one ratio. The host's drift (it moves single five-minute runs by 15 %) then hits both sides of
+// each ratio alike, as alternating runs of two binaries do.
 //
 //   carom_scale_bench --large 1000000 --small 10000 --phi 0.40 --equilibrate 200 --pairs 21
 //

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes the README's benchmark table: elastic hard-sphere fluid, collisions per second.
+# Makes the benchmark table of tests/bench/README.md ("Where the speed stands"): elastic hard-sphere fluid, collisions per second.
 #   tests/bench/table.sh [path/to/carom_bench] [--no-million] > table.md
 # (--no-million leaves out the N = 1e6 rows, which take tens of minutes.)
 # Each case starts from a lattice (monodisperse) or random insertion (mixtures), runs 10

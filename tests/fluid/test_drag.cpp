@@ -1,4 +1,4 @@
-// Drag closures against VALIDATION.md and hand calculations (fluid/drag.hpp).
+// Drag closures against tests/VALIDATION.md and hand calculations (fluid/drag.hpp).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -16,7 +16,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kGravity = 9.81;
 
-/// 0.5 mm glass (2500 kg/m^3) in air (1.2 kg/m^3, 1.8e-5 Pa s): the VALIDATION.md case.
+/// 0.5 mm glass (2500 kg/m^3) in air (1.2 kg/m^3, 1.8e-5 Pa s): the tests/VALIDATION.md case.
 DragInput glass_in_air(double eps = 1.0, double slip = 0.0) {
   DragInput in;
   in.porosity = eps;
@@ -32,7 +32,7 @@ double beta_of(DragClosureKind kind, double eps, double slip) {
   return DragClosure(kind).momentum_exchange(glass_in_air(eps, slip));
 }
 
-// VALIDATION.md, "Drag closures": beta in kg/(m^3 s) at three (eps, slip) points. The table
+// tests/VALIDATION.md, "Drag closures": beta in kg/(m^3 s) at three (eps, slip) points. The table
 // has 5 significant figures, so relative 1e-4 is its precision (a wrong exponent, Re
 // definition or K <-> beta conversion is off by far more).
 TEST(DragValidation, BetaTableErgunWenYuBlend) {
@@ -51,7 +51,8 @@ TEST(DragValidation, BetaTableErgunWenYuBlend) {
 }
 
 // Single glass sphere settling in still air under Schiller-Naumann: 3.706 m/s, Re 123.5,
-// C_d 0.9915 (VALIDATION.md, 4 significant figures: 0.05 % on the velocity).
+// C_d 0.9915 (tests/VALIDATION.md, "Settling and minimum fluidization", 4 significant figures:
+// 0.05 % on the velocity).
 TEST(DragSettling, SchillerNaumannTerminalVelocity) {
   const DragInput in = glass_in_air();
   const double ut = DragClosure(DragClosureKind::SchillerNaumann).terminal_velocity(in);
@@ -64,7 +65,7 @@ TEST(DragSettling, SchillerNaumannTerminalVelocity) {
   EXPECT_NEAR(rz.terminal_velocity / ut, 1.0, 1e-12);
 }
 
-// Wen-Yu correlation: Ar = 1.1349e4, Re_mf = 6.284, U_mf = 0.1885 m/s (VALIDATION.md,
+// Wen-Yu correlation: Ar = 1.1349e4, Re_mf = 6.284, U_mf = 0.1885 m/s (tests/VALIDATION.md,
 // 4-5 significant figures).
 TEST(DragFluidization, WenYuCorrelation) {
   const DragInput in = glass_in_air();

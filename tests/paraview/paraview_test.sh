@@ -1,5 +1,5 @@
 #!/bin/sh
-# ParaView on a carom run (issue 20): a short fluidized-bed run with a gas, its XDMF sidecars
+# ParaView on a carom run: a short fluidized-bed run with a gas, its XDMF sidecars
 # read by ParaView's three .xmf readers (check_paraview_output.py), and a snapshot rendered by
 # scenarios/plots/paraview_snapshot.py checked for not being blank.
 #

@@ -91,7 +91,7 @@ constexpr double kPi = std::numbers::pi;
 
 // Chung & Ooi (2011), the DEM impact benchmarks, tests 1-3 with their materials (as the Yade
 // and Kratos implementations of the benchmark give them: the paper itself was not at hand).
-// Hertz values computed from the formulas of VALIDATION.md,
+// Hertz values computed from the formulas of tests/VALIDATION.md, "Soft-sphere contacts",
 // which the digitised paper curves match (test 1: 10.70 kN peaking at 20.5 us, back to 0 at
 // 40.5 us; test 2: 11.36 kN, ~728 us). Tolerance 2e-3: the references are given to 3-4 digits.
 // Test 1: two glass spheres (E = 4.8e10 Pa, nu = 0.2, 2800 kg/m^3, R = 10 mm) head-on at

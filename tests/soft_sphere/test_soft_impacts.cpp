@@ -1,6 +1,7 @@
 // Soft-sphere contacts at particle-impact level: the Hertz and linear binary impacts against
-// their closed forms (VALIDATION.md), the restitution the damping was chosen for, oblique
-// impacts on a wall against the Coulomb law in closed form, and the rigid limit: Walton's law.
+// their closed forms (tests/VALIDATION.md, "Soft-sphere contacts"), the restitution the damping was
+// chosen for, oblique impacts on a wall against the Coulomb law in closed form, and the rigid
+// limit: Walton's law.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,8 +18,8 @@ using namespace soft_test;
 
 constexpr double kPi = std::numbers::pi;
 
-// VALIDATION.md, "Soft-sphere contacts": identical spheres R = 0.5 mm, 2500 kg/m^3, E = 1e7 Pa,
-// nu = 0.3, approach speed 1 m/s: delta_max = 3.464117e-5 m, t_c = 1.0195850e-4 s,
+// tests/VALIDATION.md, "Soft-sphere contacts": identical spheres R = 0.5 mm, 2500 kg/m^3,
+// E = 1e7 Pa, nu = 0.3, approach speed 1 m/s: delta_max = 3.464117e-5 m, t_c = 1.0195850e-4 s,
 // F_max = 2.361708e-2 N, rebound at 1 m/s. Step t_c / 2000: the duration is resolved to one
 // step at each end (tolerance 1e-3 relative), the peak overlap to O((omega dt)^2) ~ 1e-6 (1e-4
 // allows for sampling the peak at a step), the undamped rebound to the integrator's energy
@@ -56,10 +57,11 @@ TEST(SoftImpact, HertzElasticWallMatchesHertzTheory) {
   EXPECT_NEAR(r.v1.z(), 1.0, 1e-5);
 }
 
-// Linear spring-dashpot, VALIDATION.md: k = 1000 N/m, m* = 6.544985e-7 kg, e = 0.9:
-// t_c = 8.041708e-5 s, gamma = 1.715016e-3 kg/s. The displacement-based contact end (the
-// dashpot may pull at the end) is the one the formula describes. Step t_c / 2000; the dashpot
-// sees the half-step velocity, an O(dt/t_c) = 5e-4 error in the dissipation: tolerance 1e-3.
+// Linear spring-dashpot, tests/VALIDATION.md, "Soft-sphere contacts": k = 1000 N/m, m* =
+// 6.544985e-7 kg, e = 0.9: t_c = 8.041708e-5 s, gamma = 1.715016e-3 kg/s. The displacement-based
+// contact end (the dashpot may pull at the end) is the one the formula describes. Step t_c / 2000;
+// the dashpot sees the half-step velocity, an O(dt/t_c) = 5e-4 error in the dissipation: tolerance
+// 1e-3.
 TEST(SoftImpact, LinearPairReboundsWithRestitutionAfterContactTime) {
   ContactLaw law;
   law.restitution = 0.9;

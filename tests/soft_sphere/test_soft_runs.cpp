@@ -65,10 +65,10 @@ TEST(SoftNeighbours, VerletListsAgreeWithBruteForce) {
 
 // Elastic gas at phi = 0.1 with stiff springs (m = d = T = 1: 864 spheres, linear contacts
 // of duration 2e-3, 0.35 % of the mean free time 0.57): the collision frequency (contacts begun)
-// against Enskog–Carnahan–Starling, 1.764 per particle (VALIDATION.md). About 1.5e4 pair
-// collisions are counted (1 sigma 0.8 %); the finite contact time shortens free flights by
-// ~0.2 %: tolerance 2 %. The total energy (kinetic + elastic) is conserved to a drift per
-// collision below 1e-6 of the energy (velocity Verlet at t_c / 10).
+// against Enskog–Carnahan–Starling, 1.764 per particle (tests/VALIDATION.md, "Elastic hard-sphere
+// gas"). About 1.5e4 pair collisions are counted (1 sigma 0.8 %); the finite contact time shortens
+// free flights by ~0.2 %: tolerance 2 %. The total energy (kinetic + elastic) is conserved to a
+// drift per collision below 1e-6 of the energy (velocity Verlet at t_c / 10).
 TEST(SoftGas, ElasticCollisionFrequencyMatchesEnskog) {
   GranularGasSpec spec;
   spec.count = 1000;
@@ -95,9 +95,10 @@ TEST(SoftGas, ElasticCollisionFrequencyMatchesEnskog) {
 }
 
 // Homogeneous cooling at e = 0.9 (the hard-sphere test's gas: 500 spheres, phi = 0.1)
-// (3 runs) against Haff's law, T(t0) = T0 / 4 with t0 = 17.8964 (VALIDATION.md), for the soft spheres
-// with contacts of 2e-3 at t_c / 50 (the restitution is then right to 1e-3, so 1 - e^2 to 1 %).
-// Tolerance 4 % as in the hard-sphere test (statistics ~1 %, finite-density effects 1-3 %).
+// (3 runs) against Haff's law, T(t0) = T0 / 4 with t0 = 17.8964 (tests/VALIDATION.md, "Homogeneous
+// cooling"), for the soft spheres with contacts of 2e-3 at t_c / 50 (the restitution is then right
+// to 1e-3, so 1 - e^2 to 1 %). Tolerance 4 % as in the hard-sphere test (statistics ~1 %,
+// finite-density effects 1-3 %).
 TEST(SoftGas, CoolingFollowsHaff) {
   const double e = 0.9, t0 = 17.8964;
   double ratio = 0;

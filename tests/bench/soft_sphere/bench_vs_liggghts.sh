@@ -1,6 +1,6 @@
 #!/bin/bash
 # carom's soft-sphere method against LIGGGHTS 3.8 on the same granular gas, from the same
-# initial state, in alternating runs (issue 15's benchmark, case (a)).
+# initial state, in alternating runs (the LIGGGHTS comparison's case (a)).
 #
 #   tests/bench/soft_sphere/bench_vs_liggghts.sh CAROM N STEPS PAIRS [--event-driven]
 #   tests/bench/soft_sphere/bench_vs_liggghts.sh CAROM column STEPS PAIRS

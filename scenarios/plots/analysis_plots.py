@@ -1,14 +1,16 @@
 """Figures of a run's analysis (scene [analysis]; run_analysis.hpp), used by plot.py.
 
   RUN_mixing.png   (runs with [analysis.mixing]) the Lacey index against time with the fitted
-                   M = 1 - (1 - M0) exp(-k t) (M0 the measured start) and the time to
-                   M = 0.8; the axial mean squared
-                   displacement with the confined-bed fit and its saturation; and side
-                   views of the bed at t = 0 and at the last snapshot with the tagged (lower
-                   half) and untagged beads in two colours;
+                   M = 1 - (1 - M0) exp(-k t) (M0 the measured start), the time to M = 0.8
+                   from the data (first reached, interpolated) beside the fit's; the axial
+                   mean squared displacement with the confined-bed fit and its saturation;
+                   and side views of the bed at t = 0 and at the last snapshot, the mixing
+                   species in its colour (lower half at t = 0 dark, upper half light), the
+                   other species pale in theirs;
   RUN_collisions.png  collision frequency per particle of every species pair, measured exactly
-                   at the events beside kinetic theory from the local fields; the granular
-                   temperature of each species and the segregation index against time.
+                   at the events beside kinetic theory from the local fields (bars in the
+                   colour of the species whose frequency it is); the granular temperature of
+                   each species and the segregation index against time.
   RUN_profiles.png (runs with [analysis.profiles]) across each section: the solid fraction,
                    the mean of the vertical and the cross velocity component with bands of one
                    standard deviation, and the mean spin about the third axis.
@@ -22,9 +24,21 @@ import os
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.collections import EllipseCollection
+from matplotlib.patches import Patch
 
-TAG_COLOURS = ("#1f77b4", "#ff7f0e")  # lower half (tagged), upper half
-OTHER_COLOUR = "0.8"
+import style
+
+# The mixing species in its species colour: the lower half at t = 0 (tagged) darker, the upper
+# half lighter; every other species in its own colour, pale, so that it stays in the picture
+# without hiding the mixing.
+TAGGED_SHADE, UNTAGGED_SHADE, OTHER_SHADE = -0.35, 0.55, 0.7
+FIT_COLOUR = "#7570b3"  # fits (not a species colour)
+
+
+def tag_colours(mixing_species):
+    """(lower half, upper half) colours of the mixing species."""
+    colour = style.species_colour(mixing_species)
+    return style.shade(colour, TAGGED_SHADE), style.shade(colour, UNTAGGED_SHADE)
 
 
 def _text(value):
@@ -52,12 +66,13 @@ def _side_view(ax, run, snapshot, tagged, mixing_species, vertical, top):
     tag = np.zeros(len(ids), dtype=int)
     tag[np.isin(ids, tag_ids[tagged != 0])] = 1
     order = np.argsort(position[:, depth])
+    lower_half, upper_half = tag_colours(mixing_species)
     colours = []
     for k in order:
         if species[k] != mixing_species:
-            colours.append(OTHER_COLOUR)
+            colours.append(style.shade(style.species_colour(species[k]), OTHER_SHADE))
         else:
-            colours.append(TAG_COLOURS[0] if tag[k] else TAG_COLOURS[1])
+            colours.append(lower_half if tag[k] else upper_half)
     ax.add_collection(EllipseCollection(2 * radius[order], 2 * radius[order], np.zeros(len(order)),
                                         units="xy", offsets=position[order][:, [across, vertical]],
                                         transOffset=ax.transData, facecolors=colours,
@@ -67,6 +82,10 @@ def _side_view(ax, run, snapshot, tagged, mixing_species, vertical, top):
     ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
+    width = (upper[across] - lower[across]) * 1e3
+    height = (min(upper[vertical], top) - lower[vertical]) * 1e3
+    ax.set_xlabel(f"{'xyz'[across]}: {width:.3g} mm wide", fontsize=8)
+    ax.set_ylabel(f"{'xyz'[vertical]}: {height:.3g} mm shown", fontsize=8)
     ax.set_title(f"$t$ = {snapshot.attrs['time']:.3g} s", fontsize=9)
 
 
@@ -77,6 +96,35 @@ def confined_msd(t, d, saturation, terms=2001):
     m = np.arange(1, terms + 1, 2)[:, None]
     series = np.sum(np.exp(-(m * np.pi)**2 * d * np.asarray(t)[None, :] / h2) / m**4, axis=0)
     return saturation * (1 - 96 / np.pi**4 * series)
+
+
+def time_to_08_from_data(t, lacey):
+    """First time the Lacey index reaches 0.8, s, interpolated linearly between samples as
+    mixing.hpp's time_to_08_data (for summaries without it); None if it never does."""
+    lacey = np.asarray(lacey, dtype=float)
+    reached = np.flatnonzero(lacey >= 0.8)
+    if len(reached) == 0:
+        return None
+    k = reached[0]
+    if k == 0 or not np.isfinite(lacey[k - 1]):
+        return float(t[k])
+    return float(t[k - 1] + (0.8 - lacey[k - 1]) / (lacey[k] - lacey[k - 1]) * (t[k] - t[k - 1]))
+
+
+def time_staying_above_08(t, lacey):
+    """Time from which the Lacey index stays at or above 0.8 to the end of the run, s
+    (interpolated like time_to_08_from_data); None if the last sample is below 0.8. A start-up
+    spike (a bed lifted as a slug) can reach 0.8 long before the bed is mixed."""
+    lacey = np.asarray(lacey, dtype=float)
+    if len(lacey) == 0 or not lacey[-1] >= 0.8:
+        return None
+    below = np.flatnonzero(~(lacey >= 0.8))
+    if len(below) == 0:
+        return float(t[0])
+    k = below[-1] + 1
+    if not np.isfinite(lacey[k - 1]):
+        return float(t[k])
+    return float(t[k - 1] + (0.8 - lacey[k - 1]) / (lacey[k] - lacey[k - 1]) * (t[k] - t[k - 1]))
 
 
 def plot_mixing(run, run_path, path, dpi):
@@ -91,40 +139,61 @@ def plot_mixing(run, run_path, path, dpi):
     vertical = int(run["analysis"].attrs["vertical_axis"])
     names = [_text(n) for n in run["species/name"][()]]
 
-    fig = plt.figure(figsize=(10, 4.2))
-    grid = fig.add_gridspec(1, 4, width_ratios=[1.3, 1.3, 0.6, 0.6], wspace=0.4)
+    fig = plt.figure(figsize=(11, 4.4))
+    grid = fig.add_gridspec(1, 4, width_ratios=[1.3, 1.3, 0.6, 0.6], wspace=0.45)
     ax = fig.add_subplot(grid[0])
-    ax.plot(t, lacey, "o", ms=3, color="0.2", label="Lacey index")
+    ax.plot(t, lacey, "o", ms=3, mfc="none", color="black", label="Lacey index, measured")
     k = mixing.get("rate")
     m0 = mixing.get("fit_start") or 0.0  # the measured M(0) the fit starts from
     if k:
         tt = np.linspace(0, t.max(), 200)
-        ax.plot(tt, 1 - (1 - m0) * np.exp(-k * tt), color="C3",
-                label=f"$1 - (1 - M_0)e^{{-kt}}$: $M_0$ = {m0:.2f}, $k$ = {k:.3g}/s")
-    ax.axhline(0.8, color="0.6", ls=":", lw=1)
+        ax.plot(tt, 1 - (1 - m0) * np.exp(-k * tt), color=FIT_COLOUR,
+                label=f"fit $1 - (1 - M_0)e^{{-kt}}$: $M_0$ = {m0:.2f}, $k$ = {k:.3g} 1/s")
+    ax.axhline(0.8, color=style.REFERENCE_COLOUR, ls=":", lw=0.8)
+    # Where M first reaches 0.8 in the data, and where the fit does: a fit over the whole run
+    # can reach it later or earlier than the data.
+    t08_data = mixing.get("time_to_m08")
+    if t08_data is None:
+        t08_data = time_to_08_from_data(t, lacey)
+    if t08_data is not None:
+        ax.axvline(t08_data, color="black", ls="--", lw=0.9,
+                   label=f"$t_{{0.8}}$ from the data (first reach 0.8): {t08_data:.3g} s")
+    else:
+        ax.plot([], [], ls="", label="the data never reach $M$ = 0.8")
+    t08_stay = time_staying_above_08(t, lacey)
+    step = np.median(np.diff(t)) if len(t) > 1 else 0.0
+    if t08_data is not None and t08_stay is not None and t08_stay - t08_data > 2 * step:
+        ax.axvline(t08_stay, color="black", ls="-.", lw=0.9,
+                   label=f"data at or above 0.8 from {t08_stay:.3g} s to the end")
     t08 = mixing.get("time_to_m08_fit")
     if t08 and t08 < 1.5 * t.max():
-        ax.axvline(t08, color="C3", ls=":", lw=1)
-        ax.text(t08, 0.0, f"$t_{{0.8}}$ = {t08:.2g} s ", color="C3", fontsize=8, ha="right")
+        ax.axvline(t08, color=FIT_COLOUR, ls=":", lw=1.2, label=f"$t_{{0.8}}$ from the fit: {t08:.3g} s")
+    elif t08:
+        ax.plot([], [], ls="", label=f"$t_{{0.8}}$ from the fit: {t08:.3g} s (beyond the run)")
     ax.set_ylim(-0.05, 1.1)
-    ax.set_xlabel("$t$ (s)")
-    ax.set_ylabel(f"Lacey index $M$ ({names[mixing_species]}, lower/upper half)")
+    if t08 and t08 < 1.5 * t.max():
+        ax.set_xlim(right=max(t.max(), t08) * 1.04)
+    ax.set_xlabel("time $t$ (s)")
+    ax.set_ylabel(f"Lacey index $M$ of {names[mixing_species]} (–)")
+    ax.set_title("mixing of the lower and upper half", fontsize=9)
     # Legends below the panels: above them they hid the data.
-    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.16), fontsize=8)
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.1, -0.14), fontsize=8)
 
     ax = fig.add_subplot(grid[1])
-    ax.plot(t, msd * 1e6, "o", ms=3, color="0.2", label="measured")
+    ax.plot(t, msd * 1e6, "o", ms=3, mfc="none", color="black", label="measured")
     d = dispersion.get("axial_coefficient")
     saturation = dispersion.get("saturation_msd")
     if d and saturation:
         tt = np.linspace(0, t.max(), 300)
-        ax.plot(tt, confined_msd(tt, d, saturation) * 1e6, color="C0",
+        ax.plot(tt, confined_msd(tt, d, saturation) * 1e6, color=FIT_COLOUR,
                 label=f"confined-bed fit, $D$ = {d:.3g} m$^2$/s")
     if saturation:
-        ax.axhline(saturation * 1e6, color="0.6", ls=":", lw=1, label="saturation 2 Var($h$)")
-    ax.set_xlabel("$t$ (s)")
+        ax.axhline(saturation * 1e6, color=style.REFERENCE_COLOUR, ls=":", lw=1,
+                   label=f"saturation 2 Var($h$) = {saturation * 1e6:.3g} mm$^2$")
+    ax.set_xlabel("time $t$ (s)")
     ax.set_ylabel("axial MSD about the mean (mm$^2$)")
-    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.16), fontsize=8)
+    ax.set_title(f"vertical dispersion of {names[mixing_species]}", fontsize=9)
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.1, -0.14), fontsize=8)
 
     snapshots = sorted(run["snapshots"].keys())
     tagged = run["analysis/tagged"][()]
@@ -132,10 +201,20 @@ def plot_mixing(run, run_path, path, dpi):
     # One height for both views: the highest bead of the mixing species plus a margin.
     top = max(np.percentile(s["position"][()][s["species"][()] == mixing_species, vertical], 99.5)
               for s in shown) + 4 * max(s["radius"][()].max() for s in shown)
+    views = []
     for column, snapshot in zip((2, 3), shown):
-        _side_view(fig.add_subplot(grid[column]), run, snapshot, tagged, mixing_species, vertical, top)
-    fig.text(0.75, 0.02, "blue: lower half at $t$ = 0, orange: upper half, grey: other species",
-             ha="center", fontsize=8)
+        views.append(fig.add_subplot(grid[column]))
+        _side_view(views[-1], run, snapshot, tagged, mixing_species, vertical, top)
+    lower_half, upper_half = tag_colours(mixing_species)
+    handles = [Patch(facecolor=lower_half, edgecolor="black", lw=0.3,
+                     label=f"{names[mixing_species]}, lower half at $t$ = 0"),
+               Patch(facecolor=upper_half, edgecolor="black", lw=0.3,
+                     label=f"{names[mixing_species]}, upper half at $t$ = 0")]
+    present = set(np.unique(np.concatenate([s["species"][()] for s in shown])))
+    handles += [Patch(facecolor=style.shade(style.species_colour(k), OTHER_SHADE),
+                      edgecolor="black", lw=0.3, label=name)
+                for k, name in enumerate(names) if k != mixing_species and k in present]
+    views[0].legend(handles=handles, loc="upper left", bbox_to_anchor=(-0.1, -0.14), fontsize=8)
     fig.savefig(path, dpi=dpi, bbox_inches="tight")
     plt.close(fig)
 
@@ -147,37 +226,56 @@ def plot_collisions(run, run_path, path, dpi):
     kinetic = analysis.get("kinetic_theory_frequency", {})
     series = run["timeseries"]
     t = series["time"][()]
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     ax = axes[0]
-    pairs = [f"{a}-{b}" for a in names for b in names] + [f"{a}@walls" for a in names]
+    # Row species s (bar colour) collides with the partner: another species or the walls.
+    pairs = [(s, f"{a}-{b}", f"{a} with {b}") for s, a in enumerate(names) for b in names]
+    pairs += [(s, f"{a}@walls", f"{a} with walls") for s, a in enumerate(names)]
     x = np.arange(len(pairs))
     value = lambda table, key: table.get(key) if table.get(key) is not None else np.nan  # noqa: E731
-    ax.bar(x - 0.2, [value(measured, p) for p in pairs], 0.4, color="C0", label="measured (events)")
-    ax.bar(x + 0.2, [value(kinetic, p) for p in pairs], 0.4, color="C1",
-           label="kinetic theory (local fields)")
+    colours = [style.species_colour(s) for s, _, _ in pairs]
+    ax.bar(x - 0.2, [value(measured, key) for _, key, _ in pairs], 0.4, color=colours,
+           edgecolor="black", lw=0.4)
+    ax.bar(x + 0.2, [value(kinetic, key) for _, key, _ in pairs], 0.4, color="white",
+           edgecolor=colours, hatch="////", lw=0.8)
+    if not any(value(measured, key) > 0 for _, key, _ in pairs):
+        ax.text(0.5, 0.6, "no collisions in this run", ha="center", transform=ax.transAxes,
+                color="0.3")
     ax.set_xticks(x)
-    ax.set_xticklabels(pairs, rotation=30, ha="right")
-    ax.set_ylabel("collisions per particle per s")
-    ax.set_yscale("log")
-    ax.legend()
-    ax.set_title("row species collides with column species", fontsize=9)
+    ax.set_xticklabels([label for _, _, label in pairs], rotation=30, ha="right")
+    ax.set_ylabel("collision frequency per particle (1/s)")
+    if any(value(table, key) > 0 for table in (measured, kinetic) for _, key, _ in pairs):
+        ax.set_yscale("log")
+    ax.legend(handles=[Patch(facecolor="0.6", edgecolor="black", lw=0.4,
+                             label="measured at the events (whole run)"),
+                       Patch(facecolor="white", edgecolor="0.3", hatch="////",
+                             label="kinetic theory from the local fields (none for walls)")],
+              loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8)
+    ax.set_title("collisions of one particle of a species with its partners", fontsize=9,
+                 pad=34)
 
     ax = axes[1]
     temperature = series["granular_temperature"][()].reshape(len(t), -1)
     for s, name in enumerate(names):
-        ax.semilogy(t, temperature[:, s], color=f"C{s}", label=f"$\\theta$ {name}")
-    ax.set_xlabel("$t$ (s)")
+        ax.plot(t, temperature[:, s], color=style.species_colour(s), label=f"$\\theta$ {name}")
+    if np.any(temperature > 0):
+        ax.set_yscale("log")
+    else:
+        ax.text(0.5, 0.6, "granular temperature zero: the particles do not move", ha="center",
+                transform=ax.transAxes, color="0.3")
+    ax.set_xlabel("time $t$ (s)")
     ax.set_ylabel("granular temperature $\\theta$ (m$^2$/s$^2$)")
     if "segregation_index" in series:
         twin = ax.twinx()
         twin.plot(t, series["segregation_index"][()], color="0.3", ls="--", label="segregation index")
-        twin.set_ylabel("segregation index $2(h_s - h_l)/(h_s + h_l)$")
+        twin.set_ylabel("segregation index $2(h_s - h_l)/(h_s + h_l)$ (–)")
         twin.spines["right"].set_visible(True)
         lines = ax.get_legend_handles_labels()
         more = twin.get_legend_handles_labels()
         ax.legend(lines[0] + more[0], lines[1] + more[1], loc="best")
     else:
         ax.legend()
+    ax.set_title("granular temperature of each species", fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=dpi)
     plt.close(fig)
@@ -194,8 +292,10 @@ def plot_profiles(run, run_path, path, dpi):
     x = np.asarray(profiles["bin_centres"], dtype=float) * 1e3
     nan = lambda values: np.array([np.nan if u is None else u for u in values], dtype=float)  # noqa: E731
     fig, axes = plt.subplots(1, 4, figsize=(15, 3.8))
+    # Sections by height along a sequential map: their colours are not species colours.
+    colours = style.sequence_colours(len(profiles["sections"]))
     for k, section in enumerate(profiles["sections"]):
-        colour = f"C{k}"
+        colour = colours[k]
         label = f"{up} = {section['height'] * 1e3:.4g} mm"
         axes[0].plot(x, nan(section["solid_fraction"]), "o-", color=colour, label=label)
         mean = np.array([nan(m) for m in section["mean_velocity"]])
@@ -206,7 +306,7 @@ def plot_profiles(run, run_path, path, dpi):
                             alpha=0.15, lw=0)
         spin = np.array([nan(m) for m in section["mean_spin"]])
         axes[3].plot(x, spin[:, third], "o-", color=colour, label=label)
-    axes[0].set_ylabel("solid fraction")
+    axes[0].set_ylabel("solid fraction (–)")
     axes[1].set_ylabel(f"$v_{up}$ (m/s): mean, band $\\pm$ one std")
     axes[2].set_ylabel(f"$v_{across}$ (m/s): mean, band $\\pm$ one std")
     axes[3].set_ylabel(f"mean spin $\\omega_{axes_names[third]}$ (rad/s)")

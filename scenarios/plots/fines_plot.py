@@ -16,6 +16,7 @@ Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-mat
 """
 import argparse
 import os
+import sys
 
 os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
 import h5py  # noqa: E402
@@ -24,6 +25,9 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import style  # noqa: E402
 
 DIAMETER = "species.fines.diameter"
 FRACTION = "species.fines.fill.mass_fraction"
@@ -56,9 +60,11 @@ def by_diameter(h5):
 def line(ax, h5, name, scale=1.0, ylabel="", marker="o"):
     fractions, lines = by_diameter(h5)
     mean, std = metric(h5, "mean", name), metric(h5, "std", name)
+    # Fines diameters along a sequential map: not the species colours of the run figures.
+    colours = style.sequence_colours(len(lines))
     for k, (label, idx) in enumerate(lines):
         ax.errorbar(100 * fractions[idx], scale * mean[idx], yerr=scale * np.nan_to_num(std[idx]),
-                    marker=marker, capsize=3, color=f"C{k}", label=label)
+                    marker=marker, capsize=3, color=colours[k], label=label)
     ax.set_xlabel("fines mass fraction (%)")
     ax.set_ylabel(ylabel)
 
@@ -85,7 +91,11 @@ def main(argv=None):
 
         ax = axes[3]
         fractions, lines = by_diameter(h5)
-        partners = [("large-large", "large beads"), ("large-fines", "fines"), ("large@walls", "walls")]
+        # Partners in the colours of their species in the run figures (large, fines: the order
+        # of [[species]] in fines_bed.toml), the walls in grey.
+        partners = [("large-large", "large beads", style.species_colour(0)),
+                    ("large-fines", "fines", style.species_colour(1)),
+                    ("large@walls", "walls", style.WALL_COLOUR)]
         labels, x, offset = [], [], 0
         for label, idx in lines:
             for i in idx:
@@ -95,9 +105,9 @@ def main(argv=None):
             offset += 0.6
         order = [i for _, idx in lines for i in idx]
         bottom = np.zeros(len(order))
-        for k, (name, partner) in enumerate(partners):
+        for name, partner, colour in partners:
             values = np.nan_to_num(metric(h5, "mean", f"analysis.collision_frequency.{name}")[order])
-            ax.bar(x, values, 0.8, bottom=bottom, color=f"C{k + 2}", label=f"with {partner}")
+            ax.bar(x, values, 0.8, bottom=bottom, color=colour, label=f"with {partner}")
             bottom += values
         ax.set_xticks(x)
         ax.set_xticklabels(labels, fontsize=8)

@@ -8,7 +8,8 @@ RUN_flow.png, two panels against time:
   right: particles present of each species (/timeseries/particles_present).
 """
 import matplotlib.pyplot as plt
-import numpy as np
+
+import style
 
 
 def text(value):
@@ -16,12 +17,15 @@ def text(value):
 
 
 def flow_definitions(run):
-    """(name, set mass flow in kg/s) of each inflow and the name of each outflow, read from the
-    scene stored in the run file (names default as carom's: inflow_1, outflow_1, ...)."""
+    """(name, set mass flow in kg/s, species index) of each inflow and the name of each outflow,
+    read from the scene stored in the run file (names default as carom's: inflow_1, outflow_1,
+    ...)."""
     import tomllib
 
     scene = tomllib.loads(text(run["scene"][()]))
-    inflows = [(entry.get("name", f"inflow_{k + 1}"), float(entry["mass_flow"]))
+    names = [text(n) for n in run["species/name"][()]]
+    inflows = [(entry.get("name", f"inflow_{k + 1}"), float(entry["mass_flow"]),
+                names.index(entry["species"]) if entry.get("species") in names else k)
                for k, entry in enumerate(scene.get("inflow", []))]
     outflows = [entry.get("name", f"outflow_{k + 1}") for k, entry in enumerate(scene.get("outflow", []))]
     return inflows, outflows
@@ -31,31 +35,33 @@ def plot_flow(run, path, dpi):
     series = run["timeseries"]
     t = series["time"][()]
     fig, (mass, count) = plt.subplots(1, 2, figsize=(9.6, 3.8))
-    colours = plt.get_cmap("tab10").colors
     inflows, outflows = flow_definitions(run)
-    k = 0
+    names = [text(n) for n in run["species/name"][()]]
+    # Inflows in the colour of the species they feed (one marker per inflow); outflows, which
+    # take any species, in black and grey.
     if "entered_mass" in series:
         entered = series["entered_mass"][()].reshape(len(t), -1)
-        for j, (name, rate) in enumerate(inflows[:entered.shape[1]]):
-            c = colours[k % len(colours)]
-            mass.plot(t, entered[:, j], "o", ms=3, color=c, label=f"in: {name}")
-            mass.plot(t, rate * (t - t[0]), "-", lw=1, color=c, label=f"set: {rate:g} kg/s")
-            k += 1
+        for j, (name, rate, species) in enumerate(inflows[:entered.shape[1]]):
+            c = style.species_colour(species)
+            marker = style.partner_marker(j)
+            mass.plot(t, entered[:, j], marker, ms=3, color=c,
+                      label=f"entered through {name} ({names[species]})")
+            mass.plot(t, rate * (t - t[0]), "-", lw=1, color=c,
+                      label=f"{name}'s set rate {rate:g} kg/s")
     if "left_mass" in series:
         left = series["left_mass"][()].reshape(len(t), -1)
         for j, name in enumerate(outflows[:left.shape[1]]):
-            mass.plot(t, left[:, j], "s", ms=3, color=colours[k % len(colours)], label=f"out: {name}")
-            k += 1
+            mass.plot(t, left[:, j], "s", ms=3, mfc="none", color="black" if j == 0 else "0.5",
+                      label=f"left through {name}")
     mass.set_xlabel("time $t$ (s)")
-    mass.set_ylabel("mass (kg), cumulative")
+    mass.set_ylabel("cumulative mass (kg)")
     mass.set_title("Mass in and out")
     mass.legend(loc="upper left")
     present = series["particles_present"][()].reshape(len(t), -1)
-    names = [text(n) for n in run["species/name"][()]]
     for s in range(present.shape[1]):
-        count.plot(t, present[:, s], "-", lw=1.4, color=colours[s % len(colours)], label=names[s])
+        count.plot(t, present[:, s], "-", lw=1.4, color=style.species_colour(s), label=names[s])
     count.set_xlabel("time $t$ (s)")
-    count.set_ylabel("particles present")
+    count.set_ylabel("particles present (count)")
     count.set_title("Particles in the domain")
     count.set_ylim(bottom=0)
     count.legend(loc="best")

@@ -7,23 +7,31 @@ Writes, as 150 dpi PNGs named after the run file:
   RUN_energies.png         kinetic (translational, rotational), potential, elastic, dissipated,
                            the gas's work and the total
                            energy against time (/timeseries);
-  RUN_collision_rates.png  pair collisions per unit time for every species pair, measured over
-                           each sample interval, with the Enskog prediction when the run is a
-                           homogeneous gas (every axis periodic, no gravity, no walls);
+  RUN_collision_rates.png  collision frequency per particle (how often one particle of species s
+                           collides with particles of t, 1/s) for every species pair, measured
+                           over each sample interval, beside kinetic theory: Enskog from the
+                           global density and temperature when the run is a homogeneous gas
+                           (every axis periodic, no gravity, no walls), else the analysis'
+                           kinetic_collision_rate from the local fields (runs with
+                           [analysis]); without either the figure says so;
   RUN_snapshot.png         one snapshot (the last by default) as circles of the particles' radii
                            in a slab around the box's mid-plane, coloured by species;
   RUN_gas.png              runs with a gas: the bed pressure drop against time and against the
                            inlet velocity, with the buoyant weight per area W/A of the particles
-                           (the level a fluidized bed's pressure drop must reach);
+                           (the level a fluidized bed's pressure drop must reach) and the
+                           predicted U_mf; the measured U_mf only where the inlet ramp resolves
+                           it (at least 2 bed relaxation times tau_b = U_mf / (eps_mf g) and 20
+                           samples from rest to the predicted U_mf), else a note says why not;
   RUN_gas_field.png        runs with a gas: porosity and gas velocity of the snapshot;
   RUN_flow.png             runs with inflow or outflow: mass in and out against the set rates,
                            particles present (flow_plots.py);
   RUN_mixing.png, RUN_collisions.png   the run's analysis (analysis_plots.py).
+Every figure colours a species alike (style.py: by its index in /species).
 
 Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
-Enskog rate of s-t collisions in a mixture at granular temperature T (k = 1):
+Enskog frequency of s-t collisions of one s particle in a mixture at granular temperature T
+(k = 1):
     omega_st = 4 n_t sigma_st^2 g_st sqrt(pi T / (2 mu_st)),  mu_st = m_s m_t / (m_s + m_t),
-    rate_st = N_s omega_st (s != t),  rate_ss = N_s omega_ss / 2,
 with g_st the Boublik-Mansoori-Carnahan-Starling-Leland contact value; for one species this is
 omega = 4 n sigma^2 g0 sqrt(pi T / m) with the Carnahan-Starling g0 = (1 - phi/2) / (1 - phi)^3.
 T = 2 K / (3 (N - 1)) from the translational kinetic energy K (total momentum is zero).
@@ -47,17 +55,12 @@ from matplotlib.lines import Line2D  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analysis_plots import analysis_figures  # noqa: E402
 from flow_plots import plot_flow  # noqa: E402
+import style  # noqa: E402
 
-DPI = 150
-plt.rcParams.update({
-    "font.size": 10,
-    "axes.labelsize": 10,
-    "legend.fontsize": 9,
-    "legend.frameon": False,
-    "axes.spines.top": False,
-    "axes.spines.right": False,
-})
-COLOURS = plt.get_cmap("tab10").colors
+DPI = style.DPI
+style.apply()
+# Energies are not species: their own palette, so that no curve looks like a species.
+ENERGY_COLOURS = plt.get_cmap("Dark2").colors
 
 
 def text(value):
@@ -84,8 +87,9 @@ def is_homogeneous_gas(run):
             and len(run["walls/name"]) == 0)
 
 
-def enskog_pair_rates(run, temperature):
-    """Enskog s-t collision rates (1/s) for each temperature: array (len(T), S, S)."""
+def enskog_frequencies(run, temperature):
+    """Enskog collision frequencies per particle (1/s) for each temperature, array (len(T), S, S):
+    [s, t] is how often one s particle collides with t particles."""
     diameter = run["species/diameter"][()]
     mass = run["species/mass"][()]
     count = run["species/count"][()].astype(float)
@@ -94,17 +98,23 @@ def enskog_pair_rates(run, temperature):
     g, _ = contact_values(diameter, density)
     sigma = 0.5 * np.add.outer(diameter, diameter)
     mu = np.outer(mass, mass) / np.add.outer(mass, mass)
-    # omega[s, t]: collisions per unit time of one s particle with t particles.
     omega_per_sqrt_t = 4 * density[None, :] * sigma**2 * g * np.sqrt(np.pi / (2 * mu))
-    rate = count[:, None] * omega_per_sqrt_t
-    rate[np.diag_indices_from(rate)] *= 0.5
-    return np.sqrt(np.maximum(temperature, 0))[:, None, None] * rate[None, :, :]
+    return np.sqrt(np.maximum(temperature, 0))[:, None, None] * omega_per_sqrt_t[None, :, :]
+
+
+def energy_unit(largest):
+    """(factor, unit) that writes energies up to `largest` J with numbers between 0.1 and 1000."""
+    for factor, unit in ((1.0, "J"), (1e3, "mJ"), (1e6, "µJ"), (1e9, "nJ"), (1e12, "pJ")):
+        if largest * factor >= 0.1:
+            return factor, unit
+    return 1e15, "fJ"
 
 
 def plot_energies(run, path):
     series = run["timeseries"]
     t = series["time"][()]
-    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    fig, ax = plt.subplots(figsize=(8.4, 4.0))
+    unit = "J"
     if len(t) == 0:
         ax.text(0.5, 0.5, "no samples", ha="center", transform=ax.transAxes)
     else:
@@ -114,32 +124,51 @@ def plot_energies(run, path):
                   ("elastic", "elastic (soft-sphere contacts)", "-"),
                   ("dissipated", "dissipated", "--"),
                   ("gas_work", "work done by the gas", "-."),
-                  ("total_energy", "total (kinetic + potential + elastic\n+ dissipated - gas work)", ":")]
+                  ("total_energy", "total (kinetic + potential\n+ elastic + dissipated\n- gas work)",
+                   ":")]
         scale = np.max(np.abs(series["total_energy"][()])) or 1.0
-        for k, (name, label, style) in enumerate(curves):
+        shown = []
+        for k, (name, label, line_style) in enumerate(curves):
             if name not in series:
                 continue  # run files written before the column existed
             values = series[name][()]
             if name in ("kinetic_rotational", "potential", "elastic", "gas_work") and \
                     np.max(np.abs(values)) < 1e-12 * scale:
                 continue  # zero up to round-off (smooth spheres, no gravity): only clutter
-            ax.plot(t, values, style, color=COLOURS[k], lw=1.6 if name == "total_energy" else 1.2,
-                    label=label)
-        ax.legend(loc="best")
+            shown.append((k, label, line_style, values, name))
+        factor, unit = energy_unit(max(np.max(np.abs(v)) for _, _, _, v, _ in shown) or 1.0)
+        for k, label, line_style, values, name in shown:
+            ax.plot(t, values * factor, line_style, color=ENERGY_COLOURS[k % len(ENERGY_COLOURS)],
+                    lw=1.6 if name == "total_energy" else 1.2, label=label)
+        # Beside the axes: inside, the curves of some run always run under it.
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.set_xlabel("time $t$ (s)")
-    ax.set_ylabel("energy (J)")
+    ax.set_ylabel(f"energy ({unit})")
     ax.set_title("Energies")
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
 
 
+def species_counts(run, samples):
+    """Particles of each species at each sample, array (samples, S): particles_present where the
+    run has inflow or outflow, else the fixed counts of /species."""
+    series = run["timeseries"]
+    if "particles_present" in series:
+        return series["particles_present"][()].reshape(samples, -1).astype(float)
+    return np.tile(run["species/count"][()].astype(float), (samples, 1))
+
+
 def plot_collision_rates(run, path):
+    """Collision frequency per particle, [s, t]: collisions of one s particle with t particles per
+    second, measured over each sample interval from /timeseries/pair_collisions, beside kinetic
+    theory: Enskog from the global density and temperature for a homogeneous gas, else the
+    analysis' kinetic_collision_rate from the local fields (runs with [analysis])."""
     series = run["timeseries"]
     t = series["time"][()]
     names = species_names(run)
     s_count = len(names)
-    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    fig, ax = plt.subplots(figsize=(7.6, 4.2))
     if len(t) < 2:
         ax.text(0.5, 0.5, "fewer than two samples", ha="center", transform=ax.transAxes)
     else:
@@ -147,30 +176,64 @@ def plot_collision_rates(run, path):
         dt = np.diff(t)
         keep = dt > 0
         middle = 0.5 * (t[1:] + t[:-1])[keep]
-        measured = (np.diff(counts, axis=0)[keep] / dt[keep, None, None])
-        theory = None
+        present = species_counts(run, len(t))
+        present = 0.5 * (present[1:] + present[:-1])[keep]  # mean over each interval
+        collisions = np.diff(counts, axis=0)[keep]
+        # A collision of two s particles is one for each of them.
+        collisions[:, np.arange(s_count), np.arange(s_count)] *= 2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            measured = collisions / (dt[keep, None, None] * present[:, :, None])
+        measured[~np.isfinite(measured)] = np.nan
+        theory, theory_t, theory_label = None, None, None
         if is_homogeneous_gas(run):
             kinetic = series["kinetic_translational"][()]
             n = float(np.sum(run["species/count"][()]))
             temperature = 2 * kinetic / (3 * max(n - 1, 1))
             # Mean temperature over each interval (exact for a linear change).
-            theory = enskog_pair_rates(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
-        k = 0
+            theory = enskog_frequencies(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
+            theory_t = middle
+            theory_label = "lines: Enskog (global density and temperature)"
+        elif "kinetic_collision_rate" in series:
+            theory = series["kinetic_collision_rate"][()].reshape(len(t), s_count, s_count)
+            theory_t = t
+            theory_label = "lines: kinetic theory from the local fields ([analysis])"
+        handles = []
         for s in range(s_count):
-            for u in range(s, s_count):
-                label = names[s] if s_count == 1 else f"{names[s]}–{names[u]}"
-                colour = COLOURS[k % len(COLOURS)]
-                ax.plot(middle, measured[:, s, u], "o", ms=3, color=colour, alpha=0.8,
-                        label=f"{label}, measured")
+            for u in range(s_count):
+                colour = style.species_colour(s)
+                label = f"{names[s]} with {names[u]}"
+                ax.plot(middle, measured[:, s, u], style.partner_marker(u), ms=3, color=colour,
+                        alpha=0.7, ls="")
                 if theory is not None:
-                    ax.plot(middle, theory[:, s, u], "-", lw=1.4, color=colour,
-                            label=f"{label}, Enskog")
-                k += 1
-        ax.set_ylim(bottom=0)
-        ax.legend(loc="best")
+                    ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=1.4,
+                            color=colour)
+                handles.append(Line2D([], [], color=colour, marker=style.partner_marker(u), ms=4,
+                                      ls=style.partner_line(u) if theory is not None else "",
+                                      label=label))
+        handles.append(Line2D([], [], ls="", label="markers: measured over each sample interval"))
+        if theory is not None:
+            handles.append(Line2D([], [], ls="", label=theory_label))
+        positive = measured[np.isfinite(measured) & (measured > 0)]
+        if len(positive) == 0:
+            ax.text(0.5, 0.6, "no collisions in this run", ha="center", transform=ax.transAxes,
+                    color="0.3")
+        if theory is not None:
+            theory_positive = theory[np.isfinite(theory) & (theory > 0)]
+            positive = np.concatenate([positive, theory_positive])
+        if len(positive) and positive.max() > 30 * np.percentile(positive, 5):
+            ax.set_yscale("log")
+        else:
+            ax.set_ylim(bottom=0)
+        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+                  handlelength=2.5)
+        if theory is None:
+            ax.text(0.02, 0.98, "no kinetic-theory line: not a homogeneous gas (Enskog needs\n"
+                    "periodic axes, no gravity, no walls) and no [analysis] (local fields)",
+                    transform=ax.transAxes, va="top", fontsize=7, color="0.3")
     ax.set_xlabel("time $t$ (s)")
-    ax.set_ylabel("pair collisions per unit time (1/s)")
-    ax.set_title("Collision rates per species pair")
+    ax.set_ylabel("collision frequency per particle (1/s)")
+    ax.set_title("Collisions of one particle of a species with the partner species",
+                 fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
@@ -202,7 +265,7 @@ def plot_snapshot(run, path, index, axes, slab):
         np.ones(len(radius), bool)
     order = np.argsort(position[chosen, depth_axis])  # nearer particles drawn last
     p, r, s = position[chosen][order], radius[chosen][order], species[chosen][order]
-    colours = np.array([COLOURS[k % len(COLOURS)] for k in s]).reshape(-1, 3)
+    colours = [style.species_colour(k) for k in s]
     ax.add_collection(EllipseCollection(2 * r, 2 * r, np.zeros_like(r), units="xy",
                                         offsets=p[:, [a, b]], transOffset=ax.transData,
                                         facecolors=colours, edgecolors="black", linewidths=0.3))
@@ -214,7 +277,7 @@ def plot_snapshot(run, path, index, axes, slab):
     ax.set_aspect("equal")
     ax.set_xlabel(f"${axes[0]}$ (m)")
     ax.set_ylabel(f"${axes[1]}$ (m)")
-    handles = [Line2D([], [], marker="o", ls="", ms=8, markerfacecolor=COLOURS[k % len(COLOURS)],
+    handles = [Line2D([], [], marker="o", ls="", ms=8, markerfacecolor=style.species_colour(k),
                       markeredgecolor="black", label=name) for k, name in enumerate(names)]
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     what = (f"slab $|{'xyz'[depth_axis]} - {middle:.3g}| \\leq {0.5 * slab:.3g}$ m"
@@ -267,43 +330,102 @@ def carrying_pressure_drop(run):
     return drop
 
 
+# A ramp resolves U_mf when it takes at least RAMP_RELAXATION_TIMES bed relaxation times and
+# RAMP_SAMPLES samples to go from rest to the predicted U_mf (see ramp_resolves_minimum_fluidization).
+RAMP_RELAXATION_TIMES = 2.0
+RAMP_SAMPLES = 20
+# Colours of the gas figure: none is a species' colour.
+GAS_DROP_COLOUR, GAS_INLET_COLOUR = "black", "#1b9e77"
+PREDICTION_COLOURS = ("#7570b3", "#d95f02")
+
+
+def ramp_resolves_minimum_fluidization(run, t, inlet):
+    """(slow, why): whether the inlet ramp is slow enough to measure U_mf, and a sentence that
+    says why (or why not).
+
+    The bed relaxes towards its new state on tau_b = U_mf / (eps_mf g): the time in which gravity
+    alone changes a bead's velocity by the interstitial gas velocity at minimum fluidization
+    (near U_mf drag and weight balance, so this is the beads' drag relaxation time there). The
+    ramp resolves U_mf when it takes at least RAMP_RELAXATION_TIMES tau_b from its start to the
+    predicted U_mf (the closure's, for a uniform bed at eps_mf = 0.4), so that the bed follows
+    the gas instead of lagging it, and at least RAMP_SAMPLES samples, so that the packed branch
+    has points enough for the fit."""
+    attrs = run["gas"].attrs
+    if "closure_minimum_fluidization" not in attrs:
+        return False, "no predicted $U_{mf}$ in the run file (no gravity?)"
+    predicted = float(attrs["closure_minimum_fluidization"])
+    eps_mf = 0.4
+    g = float(np.linalg.norm(run["domain/gravity"][()]))
+    reach = np.flatnonzero(inlet >= predicted)
+    if len(reach) == 0:
+        return False, f"the inlet never reaches the predicted $U_{{mf}}$ = {predicted:.3g} m/s"
+    reach = reach[0]
+    moving = np.flatnonzero(inlet > 0)
+    start = max(moving[0] - 1, 0) if len(moving) else 0
+    duration, samples = t[reach] - t[start], reach - start
+    tau = predicted / (eps_mf * g)
+    why = (f"the inlet reaches the predicted $U_{{mf}}$ = {predicted:.3g} m/s in {duration:.3g} s = "
+           f"{duration / tau:.2g} bed relaxation times $\\tau_b = U_{{mf}}/(\\varepsilon_{{mf}} g)$"
+           f" = {tau:.3g} s, over {samples} samples")
+    slow = duration >= RAMP_RELAXATION_TIMES * tau and samples >= RAMP_SAMPLES
+    if not slow:
+        why = (f"the ramp is too fast to resolve it: {why}; it needs $\\geq$ "
+               f"{RAMP_RELAXATION_TIMES:g} $\\tau_b$ and {RAMP_SAMPLES} samples")
+    return slow, why
+
+
 def plot_gas(run, path):
     series = run["timeseries"]
     t = series["time"][()]
     drop = carrying_pressure_drop(run)
     inlet = series["gas_inlet_velocity"][()].max(axis=1)
     weight = buoyant_weight_per_area(run)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.6, 3.8))
-    left.plot(t, drop, color=COLOURS[0], lw=1.0, label="pressure drop carrying the beads")
-    left.axhline(weight, color="0.3", ls="--", lw=0.8, label=f"W/A = {weight:.4g} Pa")
-    left.set_xlabel("$t$ (s)")
-    left.set_ylabel(r"$\Delta p$ (Pa)")
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10.4, 4.0))
+    left.plot(t, drop, color=GAS_DROP_COLOUR, lw=1.0, label="pressure drop carrying the particles")
+    left.axhline(weight, color=style.REFERENCE_COLOUR, ls="--", lw=0.8,
+                 label=f"buoyant weight per area W/A = {weight:.4g} Pa")
+    left.set_xlabel("time $t$ (s)")
+    left.set_ylabel(r"pressure drop $\Delta p$ (Pa)")
     twin = left.twinx()
-    twin.plot(t, inlet, color=COLOURS[1], lw=1.0, label="inlet velocity $U$")
-    twin.set_ylabel("inlet velocity $U$ (m/s)", color=COLOURS[1])
+    twin.plot(t, inlet, color=GAS_INLET_COLOUR, lw=1.0, label="inlet superficial velocity $U$")
+    twin.set_ylabel("inlet superficial velocity $U$ (m/s)", color=GAS_INLET_COLOUR)
+    twin.tick_params(axis="y", colors=GAS_INLET_COLOUR)
+    twin.set_ylim(bottom=0)
     twin.spines["right"].set_visible(True)
     # The legends sit below the axes: inside, wherever they go, some run's curve runs under them.
     lines = left.get_legend_handles_labels()
     twin_lines = twin.get_legend_handles_labels()
     left.legend(lines[0] + twin_lines[0], lines[1] + twin_lines[1], loc="upper center",
-                bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize="small", frameon=False)
-    right.plot(inlet, drop, ".", ms=2, color=COLOURS[0], label="carom")
-    right.axhline(weight, color="0.3", ls="--", lw=0.8)
-    measured = measured_minimum_fluidization(inlet, drop, weight)
+                bbox_to_anchor=(0.5, -0.2), ncol=1, fontsize=8, frameon=False)
+    right.plot(inlet, drop, ".", ms=2, color=GAS_DROP_COLOUR, label="carom, every sample")
+    right.axhline(weight, color=style.REFERENCE_COLOUR, ls="--", lw=0.8, label="W/A")
+    slow, why = ramp_resolves_minimum_fluidization(run, t, inlet)
+    measured = measured_minimum_fluidization(inlet, drop, weight) if slow else None
     if measured is not None:
-        right.axvline(measured, color=COLOURS[0], lw=0.8, label=f"measured $U_{{mf}}$ = {measured:.3f} m/s")
+        right.axvline(measured, color=GAS_DROP_COLOUR, lw=0.8,
+                      label=f"measured $U_{{mf}}$ = {measured:.3f} m/s (packed branch meets W/A)")
     attrs = run["gas"].attrs
     if "closure_minimum_fluidization" in attrs:
-        right.axvline(attrs["closure_minimum_fluidization"], color=COLOURS[2], ls=":", lw=1.0,
-                      label=f"closure at $\\varepsilon_{{mf}}$ = 0.4: "
-                            f"{attrs['closure_minimum_fluidization']:.3f} m/s")
-        right.axvline(attrs["wen_yu_minimum_fluidization"], color=COLOURS[3], ls="-.", lw=1.0,
-                      label=f"Wen-Yu: {attrs['wen_yu_minimum_fluidization']:.3f} m/s")
-    right.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=7, frameon=False)
+        right.axvline(attrs["closure_minimum_fluidization"], color=PREDICTION_COLOURS[0], ls=":",
+                      lw=1.0, label=f"predicted $U_{{mf}}$, closure at $\\varepsilon_{{mf}}$ = 0.4: "
+                                    f"{attrs['closure_minimum_fluidization']:.3f} m/s")
+        right.axvline(attrs["wen_yu_minimum_fluidization"], color=PREDICTION_COLOURS[1], ls="-.",
+                      lw=1.0, label=f"predicted $U_{{mf}}$, Wen-Yu correlation: "
+                                    f"{attrs['wen_yu_minimum_fluidization']:.3f} m/s")
+    if slow and measured is None:
+        note = f"$U_{{mf}}$ not measured: no packed branch below 0.7 W/A to fit ({why})"
+    elif not slow:
+        note = f"$U_{{mf}}$ not measured: {why}"
+    else:
+        note = f"ramp slow enough: {why}"
+    right.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1, fontsize=8,
+                 frameon=False)
     right.set_xlabel("inlet superficial velocity $U$ (m/s)")
-    right.set_ylabel(r"$\Delta p$ (Pa)")
-    right.set_title(f"closure: {text(run['gas/closure'][()])}", fontsize=9)
+    right.set_ylabel(r"pressure drop $\Delta p$ (Pa)")
+    right.set_title(f"drag closure: {text(run['gas/closure'][()])}", fontsize=9)
     fig.tight_layout()
+    fig.text(0.5, -0.02, style.wrap(note, 150), ha="center", va="top",
+             fontsize=8, color="0.25", transform=fig.transFigure)
     fig.savefig(path, dpi=DPI, bbox_inches="tight")
     plt.close(fig)
 
@@ -320,14 +442,16 @@ def plot_gas_field(run, path, index):
     fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 5.0))
     image = left.imshow(porosity[:, mid, :], origin="lower", extent=extent, cmap="viridis",
                         vmin=max(0.3, porosity.min()), vmax=1.0, aspect="equal")
-    fig.colorbar(image, ax=left, label="porosity")
+    fig.colorbar(image, ax=left, label="porosity (–)")
     speed = velocity[:, mid, :, 2]
     image = right.imshow(speed, origin="lower", extent=extent, cmap="magma", aspect="equal")
     fig.colorbar(image, ax=right, label="gas velocity $u_z$ (m/s)")
     for ax in (left, right):
         ax.set_xlabel("$x$ (m)")
         ax.set_ylabel("$z$ (m)")
-    fig.suptitle(f"$t$ = {snapshot.attrs['time']:.4g} s", fontsize=9)
+    y_mid = lower[1] + (mid + 0.5) * spacing[1]
+    fig.suptitle(f"gas cells at $t$ = {snapshot.attrs['time']:.4g} s, slice $y$ = {y_mid:.3g} m",
+                 fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
     plt.close(fig)

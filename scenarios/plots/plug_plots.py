@@ -32,6 +32,8 @@ def bed_top(profile, threshold, min_bins, bin_length, bottom):
 def plot_plugs(run, summary, path, dpi):
     import matplotlib.pyplot as plt
 
+    import style
+
     series = run["timeseries"]
     t = series["time"][()]
     phi = series["axial_solid_fraction"][()]
@@ -48,12 +50,15 @@ def plot_plugs(run, summary, path, dpi):
     mesh = space.pcolormesh(edges_t, z * 1e3, phi.T, cmap="Greys", vmin=0, vmax=max(0.65, phi.max()),
                             shading="flat", rasterized=True)
     centres = 0.5 * (z[1:] + z[:-1]) * 1e3
+    # Thresholds along a sequential map (not species colours); the first is the scene's.
+    colours = style.sequence_colours(len(thresholds), "plasma")
     if len(t) > 1:
-        space.contour(t, centres, phi.T, levels=[thresholds[0]], colors="C3", linewidths=0.6)
-    fig.colorbar(mesh, ax=space, label="axial solid fraction")
+        space.contour(t, centres, phi.T, levels=[thresholds[0]], colors=[colours[0]],
+                      linewidths=0.6)
+    fig.colorbar(mesh, ax=space, label="axial solid fraction (–)")
     space.set_xlabel("time $t$ (s)")
     space.set_ylabel("height $z$ (mm)")
-    space.set_title(f"Plugs (red: solid fraction {thresholds[0]:g})")
+    space.set_title(f"Plugs (contour: solid fraction {thresholds[0]:g})")
 
     by_threshold = {round(b["threshold"], 9): b for b in plugs.get("by_threshold", [])}
     for k, threshold in enumerate(thresholds):
@@ -63,7 +68,7 @@ def plot_plugs(run, summary, path, dpi):
         if b and b.get("length_mean") is not None:
             label += (f": {b['plugs_mean']:.2g} plugs, $\\lambda/d$ = {b['length_mean']:.3g}"
                       f" ± {b['length_std']:.2g}")
-        top.plot(t, heights * 1e3, lw=1.0 if k == 0 else 0.7, color=f"C{k}",
+        top.plot(t, heights * 1e3, lw=1.0 if k == 0 else 0.7, color=colours[k],
                  alpha=1.0 if k == 0 else 0.7, label=label)
     top.set_xlabel("time $t$ (s)")
     top.set_ylabel("bed top (mm)")

@@ -1,0 +1,75 @@
+"""The look shared by carom's figures: one colour per species, the same in every figure of a run
+(snapshot, mixing, collisions, flow), and the fonts and frames of plot.py's figures.
+
+A species is coloured by its index in the run's /species table (the order of [[species]] in the
+scene). Quantities that are not species (energies, sections, thresholds, fits) take colours
+from neutral_colour or a sequential map, so that no curve borrows a species' colour.
+"""
+import textwrap
+
+import matplotlib.colors as mcolors
+import matplotlib.pyplot as plt
+
+DPI = 150
+
+# Species colours: tab10 without its grey (index 7), kept for walls and references.
+SPECIES_COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
+                   "#bcbd22", "#17becf")
+WALL_COLOUR = "0.45"       # collisions with walls, walls in pictures
+REFERENCE_COLOUR = "0.3"   # reference levels (W/A, saturation, M = 0.8)
+FIT_COLOUR = "black"       # fits and theory curves that are not per species
+
+
+def apply():
+    """The rcParams of carom's run figures."""
+    plt.rcParams.update({
+        "font.size": 10,
+        "axes.labelsize": 10,
+        "legend.fontsize": 9,
+        "legend.frameon": False,
+        "axes.spines.top": False,
+        "axes.spines.right": False,
+    })
+
+
+def species_colour(index):
+    """The colour of species `index` in every figure of a run."""
+    return SPECIES_COLOURS[int(index) % len(SPECIES_COLOURS)]
+
+
+def shade(colour, amount):
+    """`colour` mixed with white (amount > 0, up to 1) or black (amount < 0)."""
+    rgb = mcolors.to_rgb(colour)
+    target = 1.0 if amount > 0 else 0.0
+    a = abs(amount)
+    return tuple((1 - a) * c + a * target for c in rgb)
+
+
+# Markers for the partner species of a collision frequency (row species by colour, partner by
+# marker and line style).
+PARTNER_MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*", "h")
+PARTNER_LINES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1, 1, 1)))
+
+
+def partner_marker(index):
+    return PARTNER_MARKERS[int(index) % len(PARTNER_MARKERS)]
+
+
+def partner_line(index):
+    return PARTNER_LINES[int(index) % len(PARTNER_LINES)]
+
+
+def sequence_colours(count, cmap="viridis"):
+    """`count` colours along a sequential map, for ordered quantities that are not species
+    (section heights, thresholds)."""
+    colours = plt.get_cmap(cmap)
+    if count <= 1:
+        return [colours(0.35)]
+    return [colours(0.1 + 0.75 * k / (count - 1)) for k in range(count)]
+
+
+def wrap(text, width):
+    """`text` broken into lines of at most `width` characters, never inside $...$ (mathtext)."""
+    parts = text.split("$")
+    joined = "$".join(part.replace(" ", "\x00") if k % 2 else part for k, part in enumerate(parts))
+    return "\n".join(textwrap.wrap(joined, width)).replace("\x00", " ")

@@ -25,6 +25,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.collections import EllipseCollection
 from matplotlib.patches import Patch
+from matplotlib.ticker import MaxNLocator
 
 import style
 
@@ -219,6 +220,13 @@ def plot_mixing(run, run_path, path, dpi):
     plt.close(fig)
 
 
+def wide_range(values, ratio=20.0):
+    """Whether the positive finite values span more than `ratio` (then a log axis reads best)."""
+    values = np.asarray(values, dtype=float).ravel()
+    positive = values[np.isfinite(values) & (values > 0)]
+    return len(positive) > 0 and positive.max() > ratio * positive.min()
+
+
 def plot_collisions(run, run_path, path, dpi):
     analysis = read_summary(run_path)
     names = [_text(n) for n in run["species/name"][()]]
@@ -229,10 +237,14 @@ def plot_collisions(run, run_path, path, dpi):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     ax = axes[0]
     # Row species s (bar colour) collides with the partner: another species or the walls.
-    pairs = [(s, f"{a}-{b}", f"{a} with {b}") for s, a in enumerate(names) for b in names]
-    pairs += [(s, f"{a}@walls", f"{a} with walls") for s, a in enumerate(names)]
-    x = np.arange(len(pairs))
+    # One particle (and no inflow) has no partner of its own species.
+    single = (run["species/count"][()] == 1) & ("particles_present" not in series)
+    pairs = [(s, f"{a}-{b}", f"{a} with {b}") for s, a in enumerate(names)
+             for u, b in enumerate(names) if not (s == u and single[s])]
+    if "walls/name" not in run or len(run["walls/name"]) > 0:  # no wall bars without walls
+        pairs += [(s, f"{a}@walls", f"{a} with walls") for s, a in enumerate(names)]
     value = lambda table, key: table.get(key) if table.get(key) is not None else np.nan  # noqa: E731
+    x = np.arange(len(pairs))
     colours = [style.species_colour(s) for s, _, _ in pairs]
     ax.bar(x - 0.2, [value(measured, key) for _, key, _ in pairs], 0.4, color=colours,
            edgecolor="black", lw=0.4)
@@ -244,7 +256,7 @@ def plot_collisions(run, run_path, path, dpi):
     ax.set_xticks(x)
     ax.set_xticklabels([label for _, _, label in pairs], rotation=30, ha="right")
     ax.set_ylabel("collision frequency per particle (1/s)")
-    if any(value(table, key) > 0 for table in (measured, kinetic) for _, key, _ in pairs):
+    if wide_range([value(table, key) for table in (measured, kinetic) for _, key, _ in pairs]):
         ax.set_yscale("log")
     ax.legend(handles=[Patch(facecolor="0.6", edgecolor="black", lw=0.4,
                              label="measured at the events (whole run)"),
@@ -258,12 +270,16 @@ def plot_collisions(run, run_path, path, dpi):
     temperature = series["granular_temperature"][()].reshape(len(t), -1)
     for s, name in enumerate(names):
         ax.plot(t, temperature[:, s], color=style.species_colour(s), label=f"$\\theta$ {name}")
-    if np.any(temperature > 0):
+    if wide_range(temperature):
         ax.set_yscale("log")
-    else:
+        # A bed at rest at the start has a temperature near zero: not worth decades.
+        top = np.nanmax(temperature)
+        ax.set_ylim(bottom=max(np.nanmin(temperature[temperature > 0]), 1e-5 * top) / 1.5)
+    elif not np.any(temperature > 0):
         ax.text(0.5, 0.6, "granular temperature zero: the particles do not move", ha="center",
                 transform=ax.transAxes, color="0.3")
     ax.set_xlabel("time $t$ (s)")
+    ax.xaxis.set_major_locator(MaxNLocator(nbins=5))
     ax.set_ylabel("granular temperature $\\theta$ (m$^2$/s$^2$)")
     if "segregation_index" in series:
         twin = ax.twinx()
@@ -272,12 +288,14 @@ def plot_collisions(run, run_path, path, dpi):
         twin.spines["right"].set_visible(True)
         lines = ax.get_legend_handles_labels()
         more = twin.get_legend_handles_labels()
-        ax.legend(lines[0] + more[0], lines[1] + more[1], loc="best")
+        # Below the axes: inside, the noisy curves always run under it.
+        ax.legend(lines[0] + more[0], lines[1] + more[1], loc="upper center",
+                  bbox_to_anchor=(0.5, -0.14), ncol=3, fontsize=8)
     else:
-        ax.legend()
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, fontsize=8)
     ax.set_title("granular temperature of each species", fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
+    fig.savefig(path, dpi=dpi, bbox_inches="tight")
     plt.close(fig)
 
 

@@ -55,6 +55,7 @@ from matplotlib.lines import Line2D  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analysis_plots import analysis_figures  # noqa: E402
 from flow_plots import plot_flow  # noqa: E402
+from wall_outlines import WALL_STYLE, draw_walls  # noqa: E402
 import style  # noqa: E402
 
 DPI = style.DPI
@@ -87,9 +88,13 @@ def is_homogeneous_gas(run):
             and len(run["walls/name"]) == 0)
 
 
-def enskog_frequencies(run, temperature):
-    """Enskog collision frequencies per particle (1/s) for each temperature, array (len(T), S, S):
-    [s, t] is how often one s particle collides with t particles."""
+def enskog_frequencies(run, temperature, species_temperature=None):
+    """Enskog collision frequencies per particle (1/s) at each sample, array (samples, S, S):
+    [s, t] is how often one s particle collides with t particles. `temperature` is the common
+    granular temperature T (J) of each sample; `species_temperature` (samples, S), each
+    species' own theta_s = T_s / m_s (m^2/s^2, the analysis' granular_temperature), replaces it
+    where given: omega_st = 4 n_t sigma_st^2 g_st sqrt(pi (theta_s + theta_t) / 2), which is
+    sqrt(pi T / (2 mu_st)) at a common T."""
     diameter = run["species/diameter"][()]
     mass = run["species/mass"][()]
     count = run["species/count"][()].astype(float)
@@ -97,9 +102,12 @@ def enskog_frequencies(run, temperature):
     density = count / volume
     g, _ = contact_values(diameter, density)
     sigma = 0.5 * np.add.outer(diameter, diameter)
-    mu = np.outer(mass, mass) / np.add.outer(mass, mass)
-    omega_per_sqrt_t = 4 * density[None, :] * sigma**2 * g * np.sqrt(np.pi / (2 * mu))
-    return np.sqrt(np.maximum(temperature, 0))[:, None, None] * omega_per_sqrt_t[None, :, :]
+    prefactor = 4 * density[None, :] * sigma**2 * g
+    if species_temperature is None:
+        theta = np.maximum(temperature, 0)[:, None] / mass[None, :]
+    else:
+        theta = np.maximum(species_temperature, 0)
+    return prefactor[None, :, :] * np.sqrt(np.pi / 2 * (theta[:, :, None] + theta[:, None, :]))
 
 
 def energy_unit(largest):
@@ -168,7 +176,7 @@ def plot_collision_rates(run, path):
     t = series["time"][()]
     names = species_names(run)
     s_count = len(names)
-    fig, ax = plt.subplots(figsize=(7.6, 4.2))
+    fig, ax = plt.subplots(figsize=(8.8, 4.2))
     if len(t) < 2:
         ax.text(0.5, 0.5, "fewer than two samples", ha="center", transform=ax.transAxes)
     else:
@@ -189,24 +197,37 @@ def plot_collision_rates(run, path):
             kinetic = series["kinetic_translational"][()]
             n = float(np.sum(run["species/count"][()]))
             temperature = 2 * kinetic / (3 * max(n - 1, 1))
-            # Mean temperature over each interval (exact for a linear change).
-            theory = enskog_frequencies(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
-            theory_t = middle
-            theory_label = "lines: Enskog (global density and temperature)"
+            if "granular_temperature" in series:
+                # Each species at its own temperature: a species that carries the kinetic energy
+                # (a tracer sphere moving through a cloud) would otherwise heat the others.
+                theta = series["granular_temperature"][()].reshape(len(t), s_count)
+                theory = enskog_frequencies(run, None, theta)
+                theory_t = t
+                theory_label = "lines: Enskog (global density, each species' temperature)"
+            else:
+                # Mean temperature over each interval (exact for a linear change).
+                theory = enskog_frequencies(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
+                theory_t = middle
+                theory_label = "lines: Enskog (global density and temperature)"
         elif "kinetic_collision_rate" in series:
             theory = series["kinetic_collision_rate"][()].reshape(len(t), s_count, s_count)
             theory_t = t
             theory_label = "lines: kinetic theory from the local fields ([analysis])"
         handles = []
+        single = run["species/count"][()] == 1
         for s in range(s_count):
             for u in range(s_count):
+                if s == u and single[s] and "particles_present" not in series:
+                    continue  # one particle of a species: it has no partner of its own kind
                 colour = style.species_colour(s)
                 label = f"{names[s]} with {names[u]}"
-                ax.plot(middle, measured[:, s, u], style.partner_marker(u), ms=3, color=colour,
-                        alpha=0.7, ls="")
-                if theory is not None:
-                    ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=1.4,
-                            color=colour)
+                ax.plot(middle, measured[:, s, u], style.partner_marker(u), ms=2.5, color=colour,
+                        alpha=0.45, ls="", zorder=2)
+                if theory is not None:  # over the markers, with a white edge to stand out
+                    ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=2.6,
+                            color="white", zorder=3)
+                    ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=1.5,
+                            color=style.shade(colour, -0.3), zorder=4)
                 handles.append(Line2D([], [], color=colour, marker=style.partner_marker(u), ms=4,
                                       ls=style.partner_line(u) if theory is not None else "",
                                       label=label))
@@ -222,6 +243,8 @@ def plot_collision_rates(run, path):
             positive = np.concatenate([positive, theory_positive])
         if len(positive) and positive.max() > 30 * np.percentile(positive, 5):
             ax.set_yscale("log")
+            # A bed at rest at the start has a kinetic-theory rate near zero: not worth decades.
+            ax.set_ylim(bottom=max(positive.min(), 1e-4 * positive.max()) / 1.5)
         else:
             ax.set_ylim(bottom=0)
         ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
@@ -263,29 +286,47 @@ def plot_snapshot(run, path, index, axes, slab):
         slab = 4 * radius.max() if len(radius) else 0.0
     chosen = (np.abs(position[:, depth_axis] - middle) <= 0.5 * slab) if slab > 0 else \
         np.ones(len(radius), bool)
-    order = np.argsort(position[chosen, depth_axis])  # nearer particles drawn last
+    # Nearer particles drawn last; a rare species (under 1 % of the particles: a tracer, a
+    # large sphere in a cloud) over all others, so that the slab's front does not hide it.
+    counts = np.bincount(species, minlength=len(run["species/name"]))
+    rare = counts[species[chosen]] < 0.01 * len(species)
+    order = np.lexsort((position[chosen, depth_axis], rare))
     p, r, s = position[chosen][order], radius[chosen][order], species[chosen][order]
     colours = [style.species_colour(k) for k in s]
+    # Edges only where the circles are large enough in the picture to keep their colour.
+    extent = max(upper[a] - lower[a], upper[b] - lower[b])
+    edge = 0.3 if len(r) and 2 * np.median(r) > extent / 120 else 0.0
     ax.add_collection(EllipseCollection(2 * r, 2 * r, np.zeros_like(r), units="xy",
                                         offsets=p[:, [a, b]], transOffset=ax.transData,
-                                        facecolors=colours, edgecolors="black", linewidths=0.3))
+                                        facecolors=colours, edgecolors="black", linewidths=edge))
     ax.add_patch(plt.Rectangle((lower[a], lower[b]), upper[a] - lower[a], upper[b] - lower[b],
                                fill=False, lw=0.8, color="0.3"))
     margin = 0.03 * max(upper[a] - lower[a], upper[b] - lower[b])
     ax.set_xlim(lower[a] - margin, upper[a] + margin)
     ax.set_ylim(lower[b] - margin, upper[b] + margin)
     ax.set_aspect("equal")
-    ax.set_xlabel(f"${axes[0]}$ (m)")
-    ax.set_ylabel(f"${axes[1]}$ (m)")
+    style.length_axes(ax, upper[a] - lower[a], upper[b] - lower[b], axes)
     handles = [Line2D([], [], marker="o", ls="", ms=8, markerfacecolor=style.species_colour(k),
                       markeredgecolor="black", label=name) for k, name in enumerate(names)]
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    handles.append(Line2D([], [], color="0.3", lw=0.8, label="domain"))
+    before = len(ax.lines)
+    skipped = draw_walls(ax, run, a, b, depth_axis, middle)
+    box = plt.Rectangle((lower[a], lower[b]), upper[a] - lower[a], upper[b] - lower[b],
+                        transform=ax.transData, fill=False, visible=False)
+    ax.add_patch(box)
+    for line in ax.lines[before:]:
+        line.set_clip_path(box)  # a cone's wall beyond the domain is no wall
+    if len(ax.lines) > before:
+        handles.append(Line2D([], [], **WALL_STYLE, label="walls (mid-plane)"))
+    if skipped:
+        handles.append(Line2D([], [], ls="", label="not drawn:\n" + ", ".join(skipped)))
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     what = (f"slab $|{'xyz'[depth_axis]} - {middle:.3g}| \\leq {0.5 * slab:.3g}$ m"
             if slab > 0 else "all particles")
     ax.set_title(f"$t$ = {snapshot.attrs['time']:.4g} s: {len(r)} of {len(radius)} particles\n"
                  f"({what})", fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, dpi=DPI)
+    fig.savefig(path, dpi=DPI, bbox_inches="tight")
     plt.close(fig)
 
 
@@ -447,8 +488,7 @@ def plot_gas_field(run, path, index):
     image = right.imshow(speed, origin="lower", extent=extent, cmap="magma", aspect="equal")
     fig.colorbar(image, ax=right, label="gas velocity $u_z$ (m/s)")
     for ax in (left, right):
-        ax.set_xlabel("$x$ (m)")
-        ax.set_ylabel("$z$ (m)")
+        style.length_axes(ax, extent[1] - extent[0], extent[3] - extent[2], "xz")
     y_mid = lower[1] + (mid + 0.5) * spacing[1]
     fig.suptitle(f"gas cells at $t$ = {snapshot.attrs['time']:.4g} s, slice $y$ = {y_mid:.3g} m",
                  fontsize=9)

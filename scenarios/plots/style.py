@@ -73,3 +73,16 @@ def wrap(text, width):
     parts = text.split("$")
     joined = "$".join(part.replace(" ", "\x00") if k % 2 else part for k, part in enumerate(parts))
     return "\n".join(textwrap.wrap(joined, width)).replace("\x00", " ")
+
+
+def length_axes(ax, width, height, names):
+    """Label the x and y axes of a picture `width` by `height` (m) with `names` (e.g. "xz"):
+    ticks in mm when its largest extent is under 0.5 m, fewer ticks across a narrow axis."""
+    from matplotlib.ticker import FuncFormatter, MaxNLocator
+
+    factor, unit = (1e3, "mm") if max(width, height) < 0.5 else (1.0, "m")
+    x_ticks = 2 if width < 0.2 * height else 4
+    for axis, name, ticks in ((ax.xaxis, names[0], x_ticks), (ax.yaxis, names[1], 7)):
+        axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v * factor:.4g}"))
+        axis.set_major_locator(MaxNLocator(nbins=ticks, steps=[1, 2, 2.5, 5, 10]))
+        axis.set_label_text(f"${name}$ ({unit})")

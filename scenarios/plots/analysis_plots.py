@@ -275,9 +275,14 @@ def plot_collisions(run, run_path, path, dpi):
         # A bed at rest at the start has a temperature near zero: not worth decades.
         top = np.nanmax(temperature)
         ax.set_ylim(bottom=max(np.nanmin(temperature[temperature > 0]), 1e-5 * top) / 1.5)
+    elif not np.any(np.isfinite(temperature)):
+        ax.text(0.5, 0.6, "no granular temperature (one particle)",
+                ha="center", transform=ax.transAxes, color="0.3")
     elif not np.any(temperature > 0):
         ax.text(0.5, 0.6, "granular temperature zero: the particles do not move", ha="center",
                 transform=ax.transAxes, color="0.3")
+    if len(t) > 1:
+        ax.set_xlim(t[0], t[-1])
     ax.set_xlabel("time $t$ (s)")
     ax.xaxis.set_major_locator(MaxNLocator(nbins=5))
     ax.set_ylabel("granular temperature $\\theta$ (m$^2$/s$^2$)")

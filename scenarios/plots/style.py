@@ -75,14 +75,25 @@ def wrap(text, width):
     return "\n".join(textwrap.wrap(joined, width)).replace("\x00", " ")
 
 
+# A picture whose sides differ by more than this factor is drawn stretched (not to scale).
+STRETCH = 25.0
+
+
+def stretched(width, height):
+    return max(width, height) > STRETCH * min(width, height)
+
+
 def length_axes(ax, width, height, names):
     """Label the x and y axes of a picture `width` by `height` (m) with `names` (e.g. "xz"):
-    ticks in mm when its largest extent is under 0.5 m, fewer ticks across a narrow axis."""
+    ticks in mm when its largest extent is under 0.5 m (each axis by its own extent in a
+    stretched picture), fewer ticks across a narrow axis."""
     from matplotlib.ticker import FuncFormatter, MaxNLocator
 
-    factor, unit = (1e3, "mm") if max(width, height) < 0.5 else (1.0, "m")
     x_ticks = 2 if width < 0.2 * height else 4
-    for axis, name, ticks in ((ax.xaxis, names[0], x_ticks), (ax.yaxis, names[1], 7)):
-        axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v * factor:.4g}"))
+    for axis, name, ticks, extent in ((ax.xaxis, names[0], x_ticks, width),
+                                      (ax.yaxis, names[1], 7, height)):
+        extent = extent if stretched(width, height) else max(width, height)
+        factor, unit = (1e3, "mm") if extent < 0.5 else (1.0, "m")
+        axis.set_major_formatter(FuncFormatter(lambda v, _, f=factor: f"{v * f:.4g}"))
         axis.set_major_locator(MaxNLocator(nbins=ticks, steps=[1, 2, 2.5, 5, 10]))
         axis.set_label_text(f"${name}$ ({unit})")

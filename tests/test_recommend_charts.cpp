@@ -1,13 +1,14 @@
 // `carom check` cites the shipped charts (scenarios/cli/chart_evidence.hpp): where a chart backs
 // a recommendation, its reason carries the chart's measured numbers and names the chart file,
 // and a chart is cited only where its topic applies. The numbers are taken from
-// chart_evidence.hpp and formatted as recommend.cpp formats them (three significant digits), so
+// chart_evidence.hpp and formatted as recommend.cpp formats them (core/display_number.hpp), so
 // the test checks that the output carries them, not their values (the records hold those).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
+#include "core/display_number.hpp"
 #include "recommend_support.hpp"
 #include "scenarios/cli/chart_evidence.hpp"
 #include "scenarios/cli/recommend.hpp"
@@ -25,13 +26,8 @@ const Advice* find(const std::vector<Advice>& advice, const std::string& name) {
 // A pointer into a temporary list would dangle (ASan caught one): keep the list in a variable.
 const Advice* find(std::vector<Advice>&& advice, const std::string& name) = delete;
 
-/// recommend.cpp's number format: three significant digits.
-std::string num(double x) {
-  std::ostringstream out;
-  out.precision(3);
-  out << x;
-  return out.str();
-}
+/// recommend.cpp's number format (core/display_number.hpp).
+std::string num(double x) { return display_number(x); }
 std::string pct(double x) {
   return num(100.0 * x) + " %";
 }

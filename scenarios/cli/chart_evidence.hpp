@@ -16,9 +16,9 @@ struct ChartSource {
 
 // ---------------------------------------------------------------------------------------------
 /// The dilute elastic gas (1320 spheres, phi = 0.05, 60 s, seeds 1-4): all three methods'
-/// collision frequency against event-driven (README.md, "Speed against accuracy").
+/// collision frequency against event-driven (scenarios/chart/CHARTS.md, "The dilute-gas chart").
 inline constexpr ChartSource kDiluteGas{"scenarios/scenes/dilute_gas_chart.toml", "2026-12-02",
-                                        "README.md"};
+                                        "scenarios/chart/CHARTS.md"};
 /// Event-driven cost, CPU s per simulated second.
 inline constexpr double kDiluteGasEventCost = 0.0039;
 /// Monte Carlo variants' cost, in event-driven costs (lowest, highest).

@@ -1,5 +1,7 @@
 #pragma once
 /// `carom check`: what a scene will model, and why, in plain words.
+#include <cstddef>
+#include <ostream>
 #include <string>
 
 #include "scenarios/scene/scene.hpp"
@@ -11,5 +13,20 @@ namespace carom {
 /// coupling (none yet), the grid levels, and Enskog's expected collision rate for a homogeneous
 /// periodic gas.
 std::string describe_scene(const Scene& scene);
+
+/// The widest line `carom check` prints, characters.
+inline constexpr std::size_t kCheckWidth = 100;
+
+/// `text` with every line longer than `width` broken at spaces; a continued line is indented 4
+/// more than the line it continues. A single word longer than the width (a long path) is left
+/// whole on its own line.
+std::string wrap_lines(const std::string& text, std::size_t width = kCheckWidth);
+
+/// `carom check`: places the particles, checks what a run checks at its start, and writes the
+/// report and the least model the scene needs to `out`. The scene's settling run
+/// (initial.settle_time) is run only when `settle` is true; otherwise the estimates take the
+/// bed as settled to a random packing (recommend.hpp, kSettledPacking), which keeps the check
+/// to about a second where settling takes as long as that much simulation.
+void check_scene(Scene scene, bool settle, std::ostream& out);
 
 }  // namespace carom

@@ -3,7 +3,7 @@
 // clang-format off
 //   carom run SCENE [--set key=value ...] [--out DIR] [--seed N] [--method auto|KIND] [--quiet] [--overwrite]
 //   carom resume DIR [--end T] [--quiet]
-//   carom check SCENE [--set key=value ...] [--seed N]
+//   carom check SCENE [--set key=value ...] [--seed N] [--settle]
 //   carom info FILE.h5 [--tree]
 //   carom sweep SWEEP.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
 //   carom chart CHART.toml [--jobs J] [--out DIR] [--retry-failed] [--dry-run] [--quiet]
@@ -70,6 +70,10 @@ int main(int argc, char** argv) {
   check->add_option("scene", scene_path, "scene file")->required();
   check->add_option("--set", overrides, "change a scene value before validation")->type_name("KEY=VALUE");
   CLI::Option* check_seed = check->add_option("--seed", seed_text, "random seed, an integer >= 0");
+  bool settle = false;
+  check->add_flag("--settle", settle,
+                  "run the scene's settling (initial.settle_time) before the estimates; without it the bed is "
+                  "taken as settled to a random packing");
 
   CLI::App* info = app.add_subcommand("info", "describe a run file or checkpoint");
   info->add_option("file", info_path, "HDF5 file (run.h5, checkpoint.h5 or a sweep's summary.h5)")->required();
@@ -139,7 +143,7 @@ int main(int argc, char** argv) {
         if (*stop_flag())
           throw InterruptedBeforeStart(
               "interrupted while the particles were placed: nothing written");
-        const std::vector<Advice> advice = recommend(placed, scene_numbers(placed));
+        const std::vector<Advice> advice = recommend(placed, scene_numbers(placed, scene.settle_time > 0));
         const std::string_view chosen = method_name(recommended_method(advice));
         if (!quiet)
           std::cerr << "carom: --method auto: " << chosen << " (" << advice.front().reason << ")\n";
@@ -147,17 +151,7 @@ int main(int argc, char** argv) {
         scene = load_scene(scene_path, overrides, chosen_seed);
       }
       if (*check) {
-        install_stop_handlers();
-        build_initial_state(scene, stop_flag());
-        if (*stop_flag()) throw InterruptedBeforeStart("interrupted while the particles were placed: nothing checked");
-        try {
-          make_method(scene.system, scene.method);  // the checks a run makes at its start
-        } catch (const std::invalid_argument& e) {
-          throw SceneError(scene.file + ": " + e.what());
-        }
-        std::cout << describe_scene(scene);
-        const SceneNumbers numbers = scene_numbers(scene);
-        std::cout << describe_recommendation(numbers, recommend(scene, numbers));
+        check_scene(std::move(scene), settle, std::cout);
         return kExitOk;
       }
       RunOptions options;

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <utility>
 
+#include "core/display_number.hpp"
 #include "fluid/drag.hpp"
 #include "scenarios/cli/chart_evidence.hpp"
 
@@ -15,13 +16,8 @@ namespace carom {
 
 namespace {
 
-/// Three significant digits.
-std::string num(double x) {
-  std::ostringstream out;
-  out.precision(3);
-  out << x;
-  return out.str();
-}
+/// A number for the report (core/display_number.hpp: as typed, else 4 significant digits).
+std::string num(double x) { return display_number(x); }
 
 /// Carnahan-Starling contact value, the packing capped at 0.6 (a frozen packing has no mean free
 /// time to speak of; the cap keeps the estimate finite).
@@ -40,7 +36,7 @@ double hertz_peak_overlap(const Species& s, const ElasticMaterial& m, double v) 
 
 /// Hertz contact time of two equal spheres of the species at approach speed v, s.
 double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) {
-  return 2.9432752 * hertz_peak_overlap(s, m, v) / v;  // VALIDATION.md, "Soft-sphere contacts"
+  return 2.9432752 * hertz_peak_overlap(s, m, v) / v;  // tests/VALIDATION.md, "Soft-sphere contacts"
 }
 
 /// The solid fraction around a typical particle: the domain cut into cells of about `edge`
@@ -84,7 +80,7 @@ std::string cite(const evidence::ChartSource& chart) {
   return std::string(" [chart ") + chart.file + ", measured " + chart.date + "]";
 }
 
-/// Percent with three significant digits.
+/// Percent, formatted as num().
 std::string pct(double x) {
   return num(100.0 * x) + " %";
 }
@@ -128,7 +124,7 @@ Advice monte_carlo_advice(const Scene& scene, const SceneNumbers& n) {
 
 }  // namespace
 
-SceneNumbers scene_numbers(const Scene& scene) {
+SceneNumbers scene_numbers(const Scene& scene, bool settling_skipped) {
   const System& system = scene.system;
   const ParticleStore& p = system.particles;
   const Domain& domain = system.domain;
@@ -154,6 +150,11 @@ SceneNumbers scene_numbers(const Scene& scene) {
   n.solid_fraction = solid / domain.volume();
   const double sauter = d2 > 0 ? d3 / d2 : 0.0;
   if (p.size() > 0) n.solid_fraction_seen = solid_fraction_around_particles(system, 4.0 * d_max);
+  n.packing_source = "around a typical particle as placed (sample cells of 4 diameters)";
+  if (settling_skipped && g > 0 && n.solid_fraction_seen < kSettledPacking) {
+    n.solid_fraction_seen = kSettledPacking;
+    n.packing_source = "of a settled random packing (the settling run is not run by check)";
+  }
 
   // The gas: inlet velocity, relaxation times, Stokes numbers, U_mf.
   const GasSettings& gas = scene.gas;
@@ -227,7 +228,7 @@ SceneNumbers scene_numbers(const Scene& scene) {
     n.speed_source = "the initial rms speed";
   } else if (n.inlet_velocity > 0) {
     n.speed = n.inlet_velocity;
-    n.speed_source = "the superficial gas velocity (bubbles stir beads at a fraction of it)";
+    n.speed_source = "the superficial gas velocity; bubbles stir beads at a fraction of it";
   } else if (g > 0) {
     n.speed = std::sqrt(2.0 * g * domain.length()[up]);
     n.speed_source = "a fall through the domain's height";
@@ -252,9 +253,11 @@ SceneNumbers scene_numbers(const Scene& scene) {
     n.contact_time = hertz_contact_time(system.species[largest], materials[largest], n.speed);
     n.peak_overlap = hertz_peak_overlap(system.species[largest], materials[largest], n.speed) /
                      system.species[largest].radius();
-    n.contact_source = "Hertz for two " + system.species[largest].name + " at the speed scale";
+    n.contact_source = "Hertz for two " + system.species[largest].name + " at the speed scale, from young_modulus = " +
+                       num(materials[largest].young_modulus) + " Pa";
+    n.young_modulus = materials[largest].young_modulus;
   } else {
-    n.contact_source = "unknown (give young_modulus in [[species]] to estimate it)";
+    n.contact_source = "give young_modulus in [[species]] to estimate it";
   }
 
   // Lasting contacts.
@@ -283,7 +286,7 @@ SceneNumbers scene_numbers(const Scene& scene) {
       if (!system.species[s].fixed && n.inlet_velocity <= n.species[s].minimum_fluidization)
         n.lasting_share += n.species[s].mass_share;
     n.lasting_reason = n.lasting_share > 0 ? "species with U <= U_mf stay packed"
-                                           : "every species is fluidized (U > U_mf)";
+                                           : "every species is fluidized: U > U_mf";
   } else if (floor && dissipative && scene.end_time > fall) {
     n.lasting_share = moving;
     n.lasting_reason =
@@ -375,8 +378,15 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
         "): hard spheres would need the TC model, which makes those contacts smooth and elastic";
   } else if (std::isfinite(share) && share > kContactShare) {
     method.choice = "soft_sphere";
+    // Hertz: t_c ~ E^(-2/5), so the modulus from which the contacts would be binary.
+    const double binary_from = n.young_modulus * std::pow(share / kContactShare, 2.5);
     method.reason = "contacts last " + num(share) + " of the mean free time (> " +
-                    num(kContactShare) + "): collisions are not binary";
+                    num(kContactShare) + "): collisions are not binary. This rests on young_modulus = " +
+                    num(n.young_modulus) + " Pa of [[species]], read for soft spheres: a modulus "
+                    "softened for a cheaper soft-sphere step lengthens the contacts, and with the "
+                    "material's own modulus above " + num(binary_from) +
+                    " Pa they would be binary and exact events the method (without young_modulus "
+                    "carom check does not judge contacts)";
   } else {
     method.reason =
         "binary collisions (" +
@@ -440,22 +450,22 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
     Advice flight{"flight", "relax", "", kick ? "kick" : "relax", false};
     // What the fluid step itself costs in accuracy, with relax flights, on the fluid map.
     const std::string fluid_step =
-        " (with relax flights, fluid steps from 1e-4 s to " + num(evidence::kFluidLargestStep) +
+        ". With relax flights, fluid steps from 1e-4 s to " + num(evidence::kFluidLargestStep) +
         " s moved a small fluidized bed's gas force per weight by at most " +
         pct(evidence::kFluidStepForceError) + " and its mixing rate by at most " +
-        pct(evidence::kFluidStepMixingError) + ")" + cite(evidence::kFluidMap);
+        pct(evidence::kFluidStepMixingError) + cite(evidence::kFluidMap);
     // The kick map: a first-order error of about kKickErrorPerStep dt_p / tau, and instability
     // from kKickLimitLow-High of 2 tau (the refreshed drag's slope, not 2 tau itself).
     const std::string kick_map =
-        " (on the kick map the fall's error was about " + num(evidence::kKickErrorPerStep) +
+        "; on the kick map the fall's error was about " + num(evidence::kKickErrorPerStep) +
         " step / tau, and the largest stable step " + num(evidence::kKickLimitLow) + "-" +
-        num(evidence::kKickLimitHigh) + " of 2 tau" + cite(evidence::kKickMap) + ")";
+        num(evidence::kKickLimitHigh) + " of 2 tau" + cite(evidence::kKickMap);
     const double kick_error = evidence::kKickErrorPerStep / n.step_ratio;
     if (n.step_ratio >= kKickStepRatio) {
       flight.choice = "kick or relax";
       flight.reason = "the shortest relaxation time is " + num(n.step_ratio) +
                       " fluid steps: kicks are stable, first-order accurate to about " +
-                      pct(kick_error) + kick_map + ", and cheaper to predict" + fluid_step;
+                      pct(kick_error) + ", and cheaper to predict" + kick_map + fluid_step;
     } else {
       const bool unstable = n.step_ratio < 1.0 / (2.0 * evidence::kKickLimitLow);
       flight.reason = "the shortest relaxation time is " + num(n.step_ratio) + " fluid steps (< " +
@@ -475,20 +485,18 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
   if (at_rest) {
     grid.reason = "no inlet and the particles do not move the gas: it stays uniform";
   } else {
-    grid.reason = "cells must span " + num(kCellDiameters) +
-                  " largest diameters and an axis needs 2 of them; " +
-                  (n.tube ? "the tube is " : "the narrowest lateral extent is ") +
-                  num(n.tube_ratio) + " diameters";
-    if (n.cell_ratio < kCellDiameters)
-      grid.reason += "; the scene's smallest cell is " + num(n.cell_ratio) +
-                     " diameters, finer than the drag closures assume";
-    grid.reason +=
-        "; in a small fluidized bed, cells of 2 and 4 diameters moved the gas force per "
-        "weight by " +
-        pct(evidence::kFluidForceErrorCell2) + " and " + pct(evidence::kFluidForceErrorCell4) +
-        " and the mixing rate by " + pct(evidence::kFluidMixingErrorCell2) + " and " +
-        pct(evidence::kFluidMixingErrorCell4) + " from cells of 1 diameter" +
-        cite(evidence::kFluidMap);
+    grid.reason = std::string("an axis is resolved where it holds 2 cells of ") + num(kCellDiameters) +
+                  " largest diameters; " + (n.tube ? "the tube is " : "the narrowest lateral extent is ") +
+                  num(n.tube_ratio) + " diameters. The cell size itself is the scene's choice (" +
+                  num(n.cell_ratio) +
+                  " diameters here; the shipped beds use 2 to 4): in a small fluidized bed, cells of 2 "
+                  "and 4 diameters moved the gas force per weight by " +
+                  pct(evidence::kFluidForceErrorCell2) + " and " + pct(evidence::kFluidForceErrorCell4) +
+                  " but the mixing rate by " + pct(evidence::kFluidMixingErrorCell2) + " and " +
+                  pct(evidence::kFluidMixingErrorCell4) +
+                  " from cells of 1 diameter, so a mixing rate is converged in the cell size only "
+                  "where a chart shows it" +
+                  cite(evidence::kFluidMap);
   }
   grid.differs = n.gas_dimensions != needed;
   advice.push_back(grid);
@@ -507,25 +515,31 @@ std::string describe_recommendation(const SceneNumbers& n, const std::vector<Adv
   out << "\nthe least model this scene needs (estimates from t = 0; carom run --method auto uses "
          "the method):\n";
   out << "  solid fraction " << num(n.solid_fraction) << " of the domain, "
-      << num(n.solid_fraction_seen) << " around a typical particle (sample cells of 4 diameters)\n";
+      << num(n.solid_fraction_seen) << " " << n.packing_source << "\n";
   if (std::isfinite(n.speed))
-    out << "  speed scale " << num(n.speed) << " m/s (" << n.speed_source << "): mean free time "
-        << num(n.mean_free_time) << " s (Enskog at that solid fraction)\n";
-  out << "  contact time "
-      << (std::isfinite(n.contact_time) ? num(n.contact_time) + " s" : std::string("?")) << " ("
-      << n.contact_source << ")";
-  if (std::isfinite(n.contact_time / n.mean_free_time))
-    out << ", " << num(n.contact_time / n.mean_free_time) << " of the mean free time";
-  if (std::isfinite(n.peak_overlap))
-    out << "; peak overlap " << num(n.peak_overlap) << " of the radius";
+    out << "  speed scale " << num(n.speed) << " m/s from " << n.speed_source << "\n  mean free time "
+        << num(n.mean_free_time) << " s (Enskog at that solid fraction and speed)\n";
+  if (std::isfinite(n.contact_time)) {
+    out << "  contact time " << num(n.contact_time) << " s (" << n.contact_source << ")";
+    if (std::isfinite(n.contact_time / n.mean_free_time))
+      out << ", " << num(n.contact_time / n.mean_free_time) << " of the mean free time";
+    if (std::isfinite(n.peak_overlap)) out << "; peak overlap " << num(n.peak_overlap) << " of the radius";
+  } else {
+    out << "  contact time: not estimated (" << n.contact_source << ")";
+  }
   out << "\n  lasting contacts: " << num(100 * n.lasting_share) << " % of the mass ("
       << n.lasting_reason << ")\n";
+  bool defined = false;  // the definitions once, with the first species
   for (const SpeciesNumbers& x : n.species)
-    if (std::isfinite(x.relaxation_time))
-      out << "  " << x.name << ": relaxation time " << num(x.relaxation_time) << " s"
-          << (std::isfinite(x.stokes) ? ", Stokes number " + num(x.stokes) + " (flow time L/U)"
-                                      : std::string())
+    if (std::isfinite(x.relaxation_time)) {
+      out << "  " << x.name << ": relaxation time tau " << num(x.relaxation_time) << " s"
+          << (defined ? "" : " (U_t / g; Stokes' rho d^2 / (18 mu) without gravity)")
+          << (std::isfinite(x.stokes)
+                  ? ", Stokes number " + num(x.stokes) + (defined ? "" : " (tau U / L, L the domain along the flow)")
+                  : std::string())
           << "\n";
+      defined = true;
+    }
   if (std::isfinite(n.mass_loading))
     out << "  mass loading " << num(n.mass_loading) << ", relaxation time / fluid step "
         << num(n.step_ratio) << ", gas cell / diameter " << num(n.cell_ratio) << "\n";

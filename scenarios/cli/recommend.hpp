@@ -34,6 +34,7 @@ struct SceneNumbers {
   /// in its sample cell of about 4 largest diameters over the cell's volume, averaged over the
   /// particles (unbiased for a uniform random placement).
   double solid_fraction_seen = 0;
+  std::string packing_source;  ///< Where solid_fraction_seen comes from.
   double speed = NAN;  ///< Collision speed scale, m/s (`speed_source` says which).
   std::string speed_source;
   double mean_free_time = NAN;  ///< Enskog at solid_fraction_seen and `speed`, s.
@@ -41,6 +42,9 @@ struct SceneNumbers {
   /// constants (young_modulus).
   double contact_time = NAN;
   std::string contact_source;
+  /// The young_modulus (of [[species]], read for soft spheres) the contact time comes from, Pa;
+  /// NaN without one. The method advice depends on it and says so.
+  double young_modulus = NAN;
   /// Hertz peak overlap of two of the largest species meeting at `speed`, over their radius
   /// (elastic, the deepest a binary impact goes); NaN without elastic constants.
   double peak_overlap = NAN;
@@ -86,12 +90,20 @@ inline constexpr double kNoGasStokes = 1e3;
 /// Relaxation time / fluid step above which kick flights are accurate (the kick map's
 /// first-order error, about 0.35 step / tau, is then below 0.4 %) and stable.
 inline constexpr double kKickStepRatio = 100.0;
-/// Gas cells must span this many largest diameters (coarse-grid closures), and an axis needs two
-/// of them to resolve anything across it.
+/// An axis of the gas is resolved only where it holds two cells of this many largest diameters;
+/// a narrower axis gets one cell. (Not a bound on the cell size: the shipped beds use cells of 2
+/// to 4 diameters, and the fluid map shows what the cell size moves; see the gas grid advice.)
 inline constexpr double kCellDiameters = 3.0;
 
+/// Solid fraction taken for a bed whose settling run (initial.settle_time) was not run: between
+/// random loose (about 0.55) and random close packing (about 0.64) of spheres. Used only where
+/// the placed particles are looser.
+inline constexpr double kSettledPacking = 0.6;
+
 /// The numbers of a scene whose initial state has been built (scene.system.particles placed).
-SceneNumbers scene_numbers(const Scene& scene);
+/// `settling_skipped`: the scene settles (initial.settle_time) but the particles are as placed;
+/// under gravity the solid fraction around a particle is then taken as kSettledPacking.
+SceneNumbers scene_numbers(const Scene& scene, bool settling_skipped = false);
 
 /// The recommendation for those numbers: method, flight, coupling, gas grid (the last three
 /// only where the scene has a gas or could need one).

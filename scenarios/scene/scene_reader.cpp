@@ -53,17 +53,44 @@ std::string closest(std::string_view word, const std::vector<std::string>& candi
   return best;
 }
 
+namespace {
+/// A value as TOML, numbers in their shortest exact form (toml++'s own printer writes
+/// 0.10000000000000001 for 0.1).
+void write_value(const toml::node& node, std::string& text) {
+  if (const auto* v = node.as_floating_point()) {
+    text += format_number(v->get());
+  } else if (const auto* v = node.as_integer()) {
+    text += std::to_string(v->get());
+  } else if (const auto* v = node.as_string()) {
+    text += "\"" + v->get() + "\"";
+  } else if (const auto* v = node.as_boolean()) {
+    text += v->get() ? "true" : "false";
+  } else if (const auto* a = node.as_array()) {
+    text += "[";
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      text += i ? ", " : "";
+      write_value((*a)[i], text);
+    }
+    text += "]";
+  } else if (const auto* t = node.as_table()) {
+    text += "{ ";
+    bool first = true;
+    for (const auto& [key, value] : *t) {
+      text += first ? "" : ", ";
+      text += std::string(key.str()) + " = ";
+      write_value(value, text);
+      first = false;
+    }
+    text += " }";
+  } else {
+    text += "?";
+  }
+}
+}  // namespace
+
 std::string value_text(const toml::node& node) {
-  if (const auto* v = node.as_floating_point()) return format_number(v->get());
-  if (const auto* v = node.as_integer()) return std::to_string(v->get());
-  if (const auto* v = node.as_string()) return "\"" + v->get() + "\"";
-  if (const auto* v = node.as_boolean()) return v->get() ? "true" : "false";
-  std::ostringstream out;
-  if (const auto* a = node.as_array()) out << *a;
-  else if (const auto* t = node.as_table()) out << "{ " << *t << " }";
-  else out << "?";
-  std::string text = out.str();
-  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::string text;
+  write_value(node, text);
   if (text.size() > 80) text = text.substr(0, 77) + "...";
   return text;
 }

@@ -51,6 +51,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import EllipseCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analysis_plots import analysis_figures  # noqa: E402
@@ -257,6 +258,7 @@ def plot_collision_rates(run, path):
                     transform=ax.transAxes, va="top", fontsize=7, color="0.3")
     if len(t) > 1:
         ax.set_xlim(t[0], t[-1])
+    ax.xaxis.set_major_locator(MaxNLocator(nbins=6))
     ax.set_xlabel("time $t$ (s)")
     ax.set_ylabel("collision frequency per particle (1/s)")
     ax.set_title("Collisions of one particle of a species with the partner species",
@@ -304,7 +306,7 @@ def plot_snapshot(run, path, index, axes, slab):
     colours = [style.species_colour(k) for k in s]
     # Edges only where the circles are large enough in the picture to keep their colour.
     extent = max(upper[a] - lower[a], upper[b] - lower[b])
-    edge = 0.3 if len(r) and 2 * np.median(r) > extent / 120 else 0.0
+    edge = 0.3 if len(r) and 2 * np.max(r) > extent / 120 else 0.0
     # Particles under about a pixel at this size (a duct a metre tall) are drawn as markers.
     tiny = len(r) > 0 and 2 * np.median(r) < extent / 250
     if stretch or tiny:  # circles would be lines or dots: markers at the centres
@@ -341,8 +343,10 @@ def plot_snapshot(run, path, index, axes, slab):
     if skipped:
         handles.append(Line2D([], [], ls="", label="not drawn:\n" + ", ".join(skipped)))
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
-    what = (f"slab $|{'xyz'[depth_axis]} - {middle:.3g}| \\leq {0.5 * slab:.3g}$ m"
-            if slab > 0 else "all particles")
+    # The slab in the unit of the picture's axes.
+    factor, unit = (1e3, "mm") if max(upper - lower) < 0.5 else (1.0, "m")
+    what = (f"slab $|{'xyz'[depth_axis]} - {middle * factor:.3g}| \\leq {0.5 * slab * factor:.3g}$"
+            f" {unit}" if slab > 0 else "all particles")
     if stretch:
         what += ";\nnot to scale: particles as markers"
     elif tiny:
@@ -354,18 +358,19 @@ def plot_snapshot(run, path, index, axes, slab):
     plt.close(fig)
 
 
-def buoyant_weight_per_area(run):
-    """W/A = sum m_i |g| (1 - rho_g/rho_p) / (area normal to gravity), Pa."""
+def buoyant_weight_per_area(run, counts=None):
+    """W/A = sum m_i |g| (1 - rho_g/rho_p) / (area normal to gravity), Pa, of the particles
+    of /species (or of `counts`, array (samples, S): then one value per sample)."""
     lower, upper = run["domain/lower"][()], run["domain/upper"][()]
     gravity = np.asarray(run["domain/gravity"][()])
     down = int(np.argmax(np.abs(gravity)))
     area = np.prod([upper[k] - lower[k] for k in range(3) if k != down])
     rho_g = run["gas"].attrs["density"]
     species = run["species"]
-    weight = sum(n * m * np.linalg.norm(gravity) * (1 - rho_g / rho)
-                 for n, m, rho in zip(species["count"][()], species["mass"][()],
-                                      species["density"][()]))
-    return weight / area
+    per_particle = (species["mass"][()] * np.linalg.norm(gravity)
+                    * (1 - rho_g / species["density"][()]))
+    counts = species["count"][()] if counts is None else counts
+    return np.asarray(counts, dtype=float) @ per_particle / area
 
 
 def measured_minimum_fluidization(inlet, drop, weight):
@@ -444,11 +449,17 @@ def plot_gas(run, path):
     t = series["time"][()]
     drop = carrying_pressure_drop(run)
     inlet = series["gas_inlet_velocity"][()].max(axis=1)
-    weight = buoyant_weight_per_area(run)
     fig, (left, right) = plt.subplots(1, 2, figsize=(10.4, 4.0))
     left.plot(t, drop, color=GAS_DROP_COLOUR, lw=1.0, label="pressure drop carrying the particles")
-    left.axhline(weight, color=style.REFERENCE_COLOUR, ls="--", lw=0.8,
-                 label=f"buoyant weight per area W/A = {weight:.4g} Pa")
+    if "particles_present" in series:  # inflow, outflow: the weight of those present
+        weights = buoyant_weight_per_area(run, species_counts(run, len(t)))
+        weight = weights[-1] if len(weights) else 0.0
+        left.plot(t, weights, color=style.REFERENCE_COLOUR, ls="--", lw=0.8,
+                  label="buoyant weight per area W/A of the particles present")
+    else:
+        weight = buoyant_weight_per_area(run)
+        left.axhline(weight, color=style.REFERENCE_COLOUR, ls="--", lw=0.8,
+                     label=f"buoyant weight per area W/A = {weight:.4g} Pa")
     left.set_xlabel("time $t$ (s)")
     left.set_ylabel(r"pressure drop $\Delta p$ (Pa)")
     twin = left.twinx()
@@ -462,6 +473,15 @@ def plot_gas(run, path):
     twin_lines = twin.get_legend_handles_labels()
     left.legend(lines[0] + twin_lines[0], lines[1] + twin_lines[1], loc="upper center",
                 bbox_to_anchor=(0.5, -0.2), ncol=1, fontsize=8, frameon=False)
+    if not np.any(inlet > 0):  # still gas: nothing to plot against the inlet velocity
+        right.axis("off")
+        right.text(0.5, 0.5, "no inlet flow: no pressure drop against the inlet velocity,\n"
+                   "no minimum fluidization velocity", ha="center", va="center",
+                   transform=right.transAxes, fontsize=9, color="0.3")
+        fig.tight_layout()
+        fig.savefig(path, dpi=DPI, bbox_inches="tight")
+        plt.close(fig)
+        return
     right.plot(inlet, drop, ".", ms=2, color=GAS_DROP_COLOUR, label="carom, every sample")
     right.axhline(weight, color=style.REFERENCE_COLOUR, ls="--", lw=0.8, label="W/A")
     slow, why = ramp_resolves_minimum_fluidization(run, t, inlet)

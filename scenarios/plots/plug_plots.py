@@ -51,7 +51,7 @@ def plot_plugs(run, summary, path, dpi):
                             shading="flat", rasterized=True)
     centres = 0.5 * (z[1:] + z[:-1]) * 1e3
     # Thresholds along a sequential map (not species colours); the first is the scene's.
-    colours = style.sequence_colours(len(thresholds), "plasma")
+    colours = style.sequence_colours(len(thresholds), "plasma", end=0.7)
     if len(t) > 1:
         space.contour(t, centres, phi.T, levels=[thresholds[0]], colors=[colours[0]],
                       linewidths=0.6)
@@ -70,6 +70,14 @@ def plot_plugs(run, summary, path, dpi):
                       f" ± {b['length_std']:.2g}")
         top.plot(t, heights * 1e3, lw=1.0 if k == 0 else 0.7, color=colours[k],
                  alpha=1.0 if k == 0 else 0.7, label=label)
+    # A dense layer held at the top of the tube is the highest run of dense bins: say so, the
+    # line then shows that layer, not the bed below it.
+    heights = np.array([bed_top(p, thresholds[0], min_bins, bin_length, bottom) for p in phi])
+    pinned = np.isclose(heights, z[-1])
+    if len(t) and pinned.mean() > 0.5:
+        top.text(0.02, 0.9, f"a dense layer at the top of the tube\n({pinned.mean():.0%} of the "
+                 "samples): the bed top is its top", transform=top.transAxes, fontsize=8,
+                 color="0.3", va="top")
     top.set_xlabel("time $t$ (s)")
     top.set_ylabel("bed top (mm)")
     top.set_ylim(z[0] * 1e3, z[-1] * 1e3)

@@ -59,13 +59,14 @@ def partner_line(index):
     return PARTNER_LINES[int(index) % len(PARTNER_LINES)]
 
 
-def sequence_colours(count, cmap="viridis"):
-    """`count` colours along a sequential map, for ordered quantities that are not species
-    (section heights, thresholds)."""
+def sequence_colours(count, cmap="viridis", end=0.85):
+    """`count` colours along a sequential map from 0.1 to `end` of it (short of its light end,
+    which is hard to see on white), for ordered quantities that are not species (section
+    heights, thresholds)."""
     colours = plt.get_cmap(cmap)
     if count <= 1:
         return [colours(0.35)]
-    return [colours(0.1 + 0.75 * k / (count - 1)) for k in range(count)]
+    return [colours(0.1 + (end - 0.1) * k / (count - 1)) for k in range(count)]
 
 
 def wrap(text, width):
@@ -97,3 +98,9 @@ def length_axes(ax, width, height, names):
         axis.set_major_formatter(FuncFormatter(lambda v, _, f=factor: f"{v * f:.4g}"))
         axis.set_major_locator(MaxNLocator(nbins=ticks, steps=[1, 2, 2.5, 5, 10]))
         axis.set_label_text(f"${name}$ ({unit})")
+    if width < 0.1 * height and not stretched(width, height):
+        # A narrow column: one tick at its middle and its width in the label.
+        factor, unit = (1e3, "mm") if max(width, height) < 0.5 else (1.0, "m")
+        left, right = ax.get_xlim()
+        ax.set_xticks([0.5 * (left + right)])
+        ax.xaxis.set_label_text(f"${names[0]}$ ({unit}), {width * factor:.3g} {unit} wide")

@@ -261,7 +261,9 @@ def plot_collisions(run, run_path, path, dpi):
     ax.legend(handles=[Patch(facecolor="0.6", edgecolor="black", lw=0.4,
                              label="measured at the events (whole run)"),
                        Patch(facecolor="white", edgecolor="0.3", hatch="////",
-                             label="kinetic theory from the local fields (none for walls)")],
+                             label="kinetic theory from the local fields"
+                             + (" (none for walls)" if any("@" in key for _, key, _ in pairs)
+                                else ""))],
               loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8)
     ax.set_title("collisions of one particle of a species with its partners", fontsize=9,
                  pad=34)

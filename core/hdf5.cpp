@@ -423,6 +423,20 @@ File File::open(const std::string& path, bool writable) {
   return File(std::move(file), path);
 }
 
+File File::open_unlocked(const std::string& path) {
+  silence_hdf5();
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!access.valid() || H5Pset_file_locking(access.get(), false, true) < 0)
+    throw std::runtime_error(path + ": cannot set up an unlocked read (HDF5: " + hdf5_error() + ")");
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
+  if (!file.valid()) {
+    const std::string detail = hdf5_error();
+    throw std::runtime_error(path + ": cannot open as an HDF5 file" +
+                             (detail.empty() ? "" : " (HDF5: " + detail + ")"));
+  }
+  return File(std::move(file), path);
+}
+
 void File::flush() const {
   if (H5Fflush(id(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush the file");
 }

@@ -189,6 +189,9 @@ class File : public Group {
   static File create(const std::string& path);
   /// Opens an existing file, read-only or for appending.
   static File open(const std::string& path, bool writable);
+  /// Opens a file read-only without HDF5's file lock, so that a file another process is writing
+  /// (a run in progress) can be read: what it holds is as of that process's last flush.
+  static File open_unlocked(const std::string& path);
   /// Writes everything buffered to disk (H5Fflush).
   void flush() const;
   /// Closes the file now, reporting errors (the destructor closes silently).

@@ -8,8 +8,10 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <toml++/toml.h>
 #include <vector>
 
+#include "core/display_number.hpp"
 #include "core/hdf5.hpp"
 #include "scenarios/run/output_estimate.hpp"
 #include "scenarios/scene/scene_reader.hpp"
@@ -21,21 +23,13 @@ using Json = nlohmann::json;
 
 namespace {
 
-/// Four significant digits: headline numbers, not data.
-std::string short_number(double x) {
-  std::ostringstream out;
-  out.precision(4);
-  out << x;
-  return out.str();
-}
-
 /// A root attribute as text ("" when absent).
 std::string text_attribute(const h5::Object& object, const std::string& name) {
   if (!object.has_attribute(name)) return "";
   try {
     return object.attribute<std::string>(name);
   } catch (const std::exception&) {
-    return short_number(object.attribute<double>(name));
+    return display_number(object.attribute<double>(name));
   }
 }
 
@@ -45,7 +39,7 @@ std::string species_text(const std::vector<std::string>& names, const std::vecto
   std::string text;
   for (std::size_t s = 0; s < names.size(); ++s) {
     text += (s ? "; " : "") + names[s] + ": " + std::to_string(s < counts.size() ? counts[s] : 0) + " particles";
-    if (s < diameters.size()) text += " of d = " + short_number(diameters[s]) + " m";
+    if (s < diameters.size()) text += " of d = " + display_number(diameters[s]) + " m";
   }
   return text;
 }
@@ -73,15 +67,15 @@ void print_summary(const Json& summary, std::ostream& out) {
   const std::string message = summary.value("message", std::string());
   if (!message.empty()) out << ": " << message;
   out << "\n";
-  out << "  simulated t = " << short_number(number_at(summary, "start_time")) << " to "
-      << short_number(number_at(summary, "end_time")) << " s in " << short_number(number_at(summary, "wall_seconds"))
-      << " s of wall time; " << short_number(number_at(summary, "events_total")) << " events, "
-      << short_number(number_at(summary, "collisions_total")) << " collisions ("
-      << short_number(number_at(summary, "collisions_per_second")) << " per wall second)\n";
+  out << "  simulated t = " << display_number(number_at(summary, "start_time")) << " to "
+      << display_number(number_at(summary, "end_time")) << " s in " << display_number(number_at(summary, "wall_seconds"))
+      << " s of wall time; " << display_number(number_at(summary, "events_total")) << " events, "
+      << display_number(number_at(summary, "collisions_total")) << " collisions ("
+      << display_number(number_at(summary, "collisions_per_second")) << " per wall second)\n";
   if (summary.contains("collision_rate_per_particle") && summary["collision_rate_per_particle"].is_object()) {
     out << "  collision rate per particle (1/s):";
     for (const auto& [pair, rate] : summary["collision_rate_per_particle"].items())
-      out << " " << pair << " " << (rate.is_number() ? short_number(rate.get<double>()) : std::string("n/a"));
+      out << " " << pair << " " << (rate.is_number() ? display_number(rate.get<double>()) : std::string("n/a"));
     out << "\n";
   }
   if (!summary.contains("analysis") || !summary["analysis"].is_object()) return;
@@ -89,12 +83,12 @@ void print_summary(const Json& summary, std::ostream& out) {
   if (analysis.contains("mixing")) {
     const Json& m = analysis["mixing"];
     out << "  mixing of " << m.value("species", std::string("?")) << ": Lacey index "
-        << short_number(number_at(m, "lacey_start")) << " -> " << short_number(number_at(m, "lacey_end"))
-        << ", rate k = " << short_number(number_at(m, "rate")) << " 1/s\n";
+        << display_number(number_at(m, "lacey_start")) << " -> " << display_number(number_at(m, "lacey_end"))
+        << ", rate k = " << display_number(number_at(m, "rate")) << " 1/s\n";
   }
   if (analysis.contains("segregation_index")) {
     const Json& s = analysis["segregation_index"];
-    out << "  segregation index " << short_number(number_at(s, "start")) << " -> " << short_number(number_at(s, "end"))
+    out << "  segregation index " << display_number(number_at(s, "start")) << " -> " << display_number(number_at(s, "end"))
         << "\n";
   }
 }
@@ -108,20 +102,20 @@ void print_run(const h5::File& file, const std::string& path, std::ostream& out)
   const std::vector<std::string> children = snapshots.children();
   out << "snapshots: " << children.size();
   if (!children.empty())
-    out << ", t = " << short_number(snapshots.open_group(children.front()).attribute<double>("time")) << " to "
-        << short_number(snapshots.open_group(children.back()).attribute<double>("time")) << " s";
+    out << ", t = " << display_number(snapshots.open_group(children.front()).attribute<double>("time")) << " to "
+        << display_number(snapshots.open_group(children.back()).attribute<double>("time")) << " s";
   out << "\n";
   const h5::Group series = file.open_group("timeseries");
   const std::vector<double> times = series.read<double>("time");
   out << "time series: " << times.size() << " rows";
-  if (!times.empty()) out << ", t = " << short_number(times.front()) << " to " << short_number(times.back()) << " s";
+  if (!times.empty()) out << ", t = " << display_number(times.front()) << " to " << display_number(times.back()) << " s";
   out << " (" << series.children().size() << " series)\n";
   if (!times.empty()) {
     const std::vector<double> total = series.read<double>("total_energy");
     const std::vector<double> dissipated = series.read<double>("dissipated");
     if (!total.empty() && !dissipated.empty())
-      out << "  at the last row: total energy " << short_number(total.back()) << " J, dissipated "
-          << short_number(dissipated.back()) << " J\n";
+      out << "  at the last row: total energy " << display_number(total.back()) << " J, dissipated "
+          << display_number(dissipated.back()) << " J\n";
   }
   if (file.contains("gas")) {
     const h5::Group gas = file.open_group("gas");
@@ -130,15 +124,27 @@ void print_run(const h5::File& file, const std::string& path, std::ostream& out)
         << gas.read_string("closure") << "\n";
   }
   const Json summary = read_summary(path);
-  if (summary.is_object())
+  if (summary.is_object()) {
     print_summary(summary, out);
-  else
-    out << "status: no summary.json beside the file (the run is still going, or was killed)\n";
+    return;
+  }
+  out << "status: no summary.json beside the file (the run is still going, or was killed)";
+  // How far: the last row against the scene's time.end (carom resume --end may move it).
+  double end = NAN;
+  try {
+    const toml::table scene = toml::parse(file.read_string("scene"));
+    end = scene["time"]["end"].value<double>().value_or(NAN);
+  } catch (const std::exception&) {
+  }
+  if (!times.empty() && end > 0)
+    out << "; t = " << display_number(times.back()) << " s of time.end = " << display_number(end) << " s ("
+        << display_number(std::round(1000.0 * times.back() / end) / 10.0) << " %) at the last flush";
+  out << "\n";
 }
 
 void print_checkpoint(const h5::File& file, std::ostream& out) {
   const h5::Group state = file.open_group("state");
-  out << "state of method " << text_attribute(state, "method") << " at t = " << short_number(state.attribute<double>("time"))
+  out << "state of method " << text_attribute(state, "method") << " at t = " << display_number(state.attribute<double>("time"))
       << " s";
   if (state.contains("particles")) {
     const std::vector<std::uint32_t> species = state.open_group("particles").read<std::uint32_t>("species");
@@ -178,7 +184,8 @@ void require_hdf5_file(const std::string& path) {
 
 void print_file_info(const std::string& path, std::ostream& out) {
   require_hdf5_file(path);
-  const h5::File file = h5::File::open(path, false);
+  // Unlocked: a run still being written is read as of its last flush (each snapshot).
+  const h5::File file = h5::File::open_unlocked(path);
   const std::string kind = text_attribute(file, "kind");
   const bool sweep = kind.empty() && file.has_attribute("sweep_file");
   if (kind != "carom run" && kind != "carom checkpoint" && !sweep)

@@ -137,7 +137,11 @@ herr_t visit(hid_t root, const char* name, const H5O_info_t* info, void* data) {
 
 void print_file_tree(const std::string& path, std::ostream& out) {
   require_hdf5_file(path);
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  // Unlocked, as carom info: a run still being written is read as of its last flush.
+  const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_file_locking(access, false, true);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, access);
+  H5Pclose(access);
   if (file < 0) throw std::runtime_error(path + ": cannot open the HDF5 file");
   WalkState state;
   state.out = &out;

@@ -8,8 +8,8 @@
 
 namespace carom {
 
-ProgressLine::ProgressLine(bool enabled, double start_time, double end_time)
-    : enabled_(enabled), start_time_(start_time), end_time_(end_time), started_(Clock::now()), last_draw_(started_) {}
+ProgressLine::ProgressLine(bool enabled, double start_time, double end_time, double log_interval)
+    : enabled_(enabled), terminal_(stderr_is_terminal()), log_interval_(log_interval), start_time_(start_time), end_time_(end_time), started_(Clock::now()), last_draw_(started_) {}
 
 bool ProgressLine::stderr_is_terminal() { return isatty(STDERR_FILENO) != 0; }
 
@@ -27,9 +27,15 @@ std::string duration_text(double seconds) {
 
 void ProgressLine::update(double time, std::uint64_t events, std::uint64_t collisions) {
   if (!enabled_) return;
+  if (!counted_) {  // the counts at this run's (or resume's) first chunk: the rates' baseline
+    last_events_ = events;
+    last_collisions_ = collisions;
+    counted_ = true;
+  }
   const auto now = Clock::now();
   const double since_draw = std::chrono::duration<double>(now - last_draw_).count();
-  if (has_last_ && since_draw < 0.25) return;
+  // The first log line comes after one interval too: a short run writes none.
+  if (terminal_ ? has_last_ && since_draw < 0.25 : since_draw < log_interval_) return;
   if (has_last_ && since_draw > 0) {
     events_rate_ = static_cast<double>(events - last_events_) / since_draw;
     collisions_rate_ = static_cast<double>(collisions - last_collisions_) / since_draw;
@@ -37,8 +43,17 @@ void ProgressLine::update(double time, std::uint64_t events, std::uint64_t colli
   const double elapsed = std::chrono::duration<double>(now - started_).count();
   const double done = (time - start_time_) / (end_time_ - start_time_);
   const double eta = done > 0 ? elapsed * (1.0 - done) / done : NAN;
-  std::fprintf(stderr, "\r  t = %.4g / %.4g s (%5.1f%%)  %.3g events/s  %.3g collisions/s  ETA %s   ", time,
-               end_time_, 100.0 * done, events_rate_, collisions_rate_, duration_text(eta).c_str());
+  if (!terminal_) {
+    // Since the last line (the first: since the start of this run or resume).
+    events_rate_ = static_cast<double>(events - last_events_) / since_draw;
+    collisions_rate_ = static_cast<double>(collisions - last_collisions_) / since_draw;
+    std::fprintf(stderr, "carom: t = %.4g / %.4g s (%.1f%%), %.3g events/s, %.3g collisions/s, %s of wall time, "
+                 "about %s to go\n", time, end_time_, 100.0 * done, events_rate_, collisions_rate_,
+                 duration_text(elapsed).c_str(), duration_text(eta).c_str());
+  } else {
+    std::fprintf(stderr, "\r  t = %.4g / %.4g s (%5.1f%%)  %.3g events/s  %.3g collisions/s  ETA %s   ", time,
+                 end_time_, 100.0 * done, events_rate_, collisions_rate_, duration_text(eta).c_str());
+  }
   std::fflush(stderr);
   drawn_ = true;
   has_last_ = true;
@@ -49,7 +64,7 @@ void ProgressLine::update(double time, std::uint64_t events, std::uint64_t colli
 }
 
 void ProgressLine::finish() {
-  if (enabled_ && drawn_) std::fputc('\n', stderr);
+  if (enabled_ && terminal_ && drawn_) std::fputc('\n', stderr);
   drawn_ = false;
 }
 

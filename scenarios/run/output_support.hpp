@@ -70,6 +70,9 @@ inline void write_info(const h5::File& file, const RunInfo& info, const char* ki
   file.set_attribute("carom_version", kVersion);
   file.set_attribute("seed", info.seed);
   file.set_attribute("scene_name", info.scene_name);
+  file.set_attribute("method", info.method);
+  file.set_attribute("run_id", info.run_id);
+  file.set_attribute("scene_hash", info.scene_hash());
   file.write_string("scene", info.scene_text);
 }
 
@@ -80,6 +83,11 @@ inline RunInfo read_info(const h5::File& file, const char* kind) {
   info.seed = file.attribute<std::uint64_t>("seed");
   info.scene_name = file.attribute<std::string>("scene_name");
   info.scene_text = file.read_string("scene");
+  // Files written before runs carried an identity have none: method empty, run_id 0.
+  if (file.has_attribute("method")) info.method = file.attribute<std::string>("method");
+  if (file.has_attribute("run_id")) info.run_id = file.attribute<std::uint64_t>("run_id");
+  if (file.has_attribute("scene_hash") && file.attribute<std::uint64_t>("scene_hash") != info.scene_hash())
+    file.fail("is damaged: its /scene does not match its attribute scene_hash");
   return info;
 }
 

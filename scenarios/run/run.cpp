@@ -5,11 +5,16 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
+#include <random>
+#include <sstream>
 
 #include <unistd.h>
 
+#include "scenarios/run/checkpoint_check.hpp"
 #include "scenarios/run/flow_run.hpp"
+#include "scenarios/run/output_lock.hpp"
 #include "scenarios/run/gas_run.hpp"
 #include "scenarios/run/output_estimate.hpp"
 #include "scenarios/run/progress.hpp"
@@ -36,6 +41,27 @@ extern "C" void on_stop_signal(int) {
     _exit(kExitInterrupted);
   }
   g_stop = 1;
+}
+
+/// A random run id (never 0, which marks files from before run ids). Drawn from the system's
+/// entropy, not the scene's seed: it identifies the run and touches no physics.
+std::uint64_t new_run_id() {
+  std::random_device entropy;
+  std::uint64_t id = 0;
+  while (id == 0) id = (std::uint64_t(entropy()) << 32) ^ entropy();
+  return id;
+}
+
+std::string hex(std::uint64_t value) {
+  std::ostringstream out;
+  out << std::hex << std::setw(16) << std::setfill('0') << value;
+  return out.str();
+}
+
+/// The "run" object of summary.json: the identity run.h5 and checkpoint.h5 carry too.
+std::string run_identity_json(const RunInfo& info) {
+  return "{\"id\": \"" + hex(info.run_id) + "\", \"scene_hash\": \"" + hex(info.scene_hash()) +
+         "\", \"seed\": " + std::to_string(info.seed) + ", \"method\": " + json_string(info.method) + "}";
 }
 
 /// Output instants k * interval, k = 0, 1, ... (computed, never accumulated, so a resumed run
@@ -75,6 +101,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   RunStretch stretch;
   stretch.start_time = sim.time();
   stretch.start_statistics = sim.statistics();
+  stretch.run_json = run_identity_json(info);
   stretch.gas = gas;
   if (gas != nullptr) stretch.gas_start = gas->times();
   stretch.flow = flow;
@@ -115,7 +142,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   auto wall_seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   };
-  ProgressLine progress(!quiet && ProgressLine::stderr_is_terminal(), sim.time(), end_time);
+  ProgressLine progress(!quiet, sim.time(), end_time);
   // Chunks of simulated time sized for about 0.2 s of wall time each: short enough for a prompt
   // reaction to a signal, long enough that the loop costs nothing. They do not change the
   // dynamics: run_until's end is a global event that touches no particle.
@@ -204,12 +231,13 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   return kExitOk;
 }
 
-/// Creates the output directory, refusing to mix a new run with an earlier one's files. Those
-/// are carom's own file names only: its outputs, and the figures scenarios/plots/plot.py draws
-/// beside run.h5 (RUN_NAME.png; a test checks this list against plot.py) and the default image
-/// of scenarios/plots/paraview_snapshot.py (run_snapshot_3d.png). --overwrite removes
-/// them; anything else in the directory is left alone.
-void prepare_output_directory(const fs::path& dir, bool overwrite) {
+/// Creates the output directory and takes its lock (output_lock.hpp), then refuses to mix a new
+/// run with an earlier one's files. Those are carom's own file names only: its outputs, and the
+/// figures scenarios/plots/plot.py draws beside run.h5 (RUN_NAME.png; a test checks this list
+/// against plot.py) and the default image of scenarios/plots/paraview_snapshot.py
+/// (run_snapshot_3d.png). --overwrite removes them, only once the lock is held, so never what
+/// another process is writing; anything else in the directory is left alone.
+std::unique_ptr<OutputLock> prepare_output_directory(const fs::path& dir, bool overwrite) {
   const char* outputs[] = {"run.h5",
                            "run.xmf",
                            "run_gas.xmf",
@@ -228,18 +256,19 @@ void prepare_output_directory(const fs::path& dir, bool overwrite) {
                            "run_flow.png",
                            "run_plugs.png"};
   std::error_code error;
-  if (fs::exists(dir, error)) {
-    if (!fs::is_directory(dir, error)) throw SceneError(dir.string() + ": --out names a file, not a directory");
-    for (const char* name : outputs) {
-      if (!fs::exists(dir / name, error)) continue;
-      if (!overwrite)
-        throw SceneError(dir.string() + " already holds the outputs of a run (" + name +
-                         "); choose another --out, remove them, or pass --overwrite");
-      fs::remove(dir / name, error);
-    }
-  }
+  if (fs::exists(dir, error) && !fs::is_directory(dir, error))
+    throw SceneError(dir.string() + ": --out names a file, not a directory");
   fs::create_directories(dir, error);
   if (error) throw SceneError(dir.string() + ": cannot create the output directory: " + error.message());
+  auto lock = std::make_unique<OutputLock>(dir, overwrite ? "carom run --overwrite" : "carom run");
+  for (const char* name : outputs) {
+    if (!fs::exists(dir / name, error)) continue;
+    if (!overwrite)
+      throw SceneError(dir.string() + " already holds the outputs of a run (" + name +
+                       "); choose another --out, remove them, or pass --overwrite");
+    fs::remove(dir / name, error);
+  }
+  return lock;
 }
 
 }  // namespace
@@ -272,8 +301,8 @@ int run_scene(Scene scene, const RunOptions& options) {
     throw SceneError(scene.file + ": " + e.what());
   }
   const fs::path dir = options.out_dir;
-  prepare_output_directory(dir, options.overwrite);
-  const RunInfo info{scene.text, scene.name, scene.seed};
+  const std::unique_ptr<OutputLock> lock = prepare_output_directory(dir, options.overwrite);
+  const RunInfo info{scene.text, scene.name, scene.seed, std::string(method_name(scene.method.kind)), new_run_id()};
   std::unique_ptr<FlowBoundaries> flow;
   try {
     flow = attach_flow(*sim, scene);
@@ -286,19 +315,41 @@ int run_scene(Scene scene, const RunOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw SceneError(scene.file + ": [gas]: " + e.what());
   }
-  RunFile file((dir / "run.h5").string(), info, sim->system(), gas.get());
-  RunAnalysis analysis(scene, *sim);
-  analysis.write_setup(file.path());
-  return run_loop(*sim, gas.get(), flow.get(), file, analysis, scene, info, dir, scene.end_time, true,
+  // A run file that cannot be started (an attribute HDF5 refuses, a full disk) is removed, so
+  // that it does not block the corrected rerun.
+  std::unique_ptr<RunFile> file;
+  std::unique_ptr<RunAnalysis> analysis;
+  try {
+    file = std::make_unique<RunFile>((dir / "run.h5").string(), info, sim->system(), gas.get());
+    analysis = std::make_unique<RunAnalysis>(scene, *sim);
+    analysis->write_setup(file->path());
+  } catch (...) {
+    file.reset();
+    std::error_code ignored;
+    fs::remove(dir / "run.h5", ignored);
+    fs::remove(dir / "run.xmf", ignored);
+    fs::remove(dir / "run_gas.xmf", ignored);
+    throw;
+  }
+  return run_loop(*sim, gas.get(), flow.get(), *file, *analysis, scene, info, dir, scene.end_time, true,
                   options.quiet);
 }
 
 int resume_run(const std::string& directory, std::optional<double> end_time, bool quiet) {
   const fs::path dir = directory;
   const fs::path checkpoint_path = dir / "checkpoint.h5";
-  if (!fs::exists(checkpoint_path))
+  if (!fs::is_directory(dir) || !fs::exists(checkpoint_path)) {
+    // A run still running may not have written its first checkpoint yet: say so first.
+    if (fs::exists(dir / kLockFile)) const OutputLock probe(dir, "carom resume");
     throw SceneError(directory + ": no checkpoint.h5 here; `carom resume` needs the output directory of a run");
-  Checkpoint checkpoint = read_checkpoint(checkpoint_path.string());
+  }
+  const OutputLock lock(dir, "carom resume");
+  Checkpoint checkpoint;
+  try {
+    checkpoint = read_checkpoint(checkpoint_path.string());
+  } catch (const std::exception& e) {
+    throw SceneError(std::string(e.what()) + " (cannot resume from it)");
+  }
   const std::string scene_file = checkpoint_path.string() + " (stored scene)";
   std::vector<std::string> overrides;
   if (end_time) overrides.push_back("time.end=" + format_number(*end_time));
@@ -308,6 +359,9 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
   if (end < now)
     throw SceneError(directory + ": the end time " + format_number(end) + " s is before the checkpoint's time " +
                      format_number(now) + " s");
+  // Everything is checked before the method is rebuilt from it: a damaged state is refused.
+  check_checkpoint_state(checkpoint, scene.system);
+  check_run_file_matches((dir / "run.h5").string(), checkpoint);
   RunInfo info = checkpoint.info;
   info.scene_text = scene.text;
   if (end == now) {

@@ -29,6 +29,10 @@
 /// with a gas run_gas.xmf lists the gas fields as cell data; both are rewritten (atomically)
 /// after every snapshot.
 ///
+/// Both files also carry the run's identity as root attributes: method, run_id, scene_hash
+/// (RunInfo). A checkpoint ends with the root attribute checksum (file_checksum.hpp), written last
+/// and verified before anything else is read.
+///
 /// Layout of a checkpoint: root attributes kind = "carom checkpoint", carom_version, seed,
 /// scene_name; /scene; /state: the method's state, attribute method = its kind (for the
 /// event-driven engine see events/event_driven/engine_state.hpp); /gas: the gas's state when
@@ -46,11 +50,16 @@
 
 namespace carom {
 
-/// What identifies a run in its outputs.
+/// What identifies a run in its outputs: run.h5, checkpoint.h5 and summary.json carry the same
+/// identity, and `carom resume` refuses a run file and a checkpoint whose identities differ.
 struct RunInfo {
-  std::string scene_text;  ///< The scene file text (after overrides).
-  std::string scene_name;  ///< [meta] name.
-  std::uint64_t seed = 0;  ///< Random seed.
+  std::string scene_text;   ///< The scene file text (after overrides).
+  std::string scene_name;   ///< [meta] name.
+  std::uint64_t seed = 0;   ///< Random seed.
+  std::string method{};     ///< The collision method's kind (empty: not recorded).
+  std::uint64_t run_id = 0; ///< Random number drawn when the run started (0: not recorded).
+  /// Hash of scene_text (text_hash), so two runs of different scenes differ at a glance.
+  std::uint64_t scene_hash() const;
 };
 
 /// Writes one run's HDF5 file. Opening creates (truncates) the file. The time series' rows wait
@@ -114,6 +123,8 @@ struct Checkpoint {
   bool has_flow() const { return file->contains("flow"); }
   h5::Group flow_state() const { return file->open_group("flow"); }
 };
+/// Opens a checkpoint, verifies its checksum first (std::runtime_error naming the file when it
+/// is missing or differs) and reads what identifies the run.
 Checkpoint read_checkpoint(const std::string& path);
 
 }  // namespace carom

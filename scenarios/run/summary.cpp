@@ -81,6 +81,7 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
   j << "{\n";
   j << "  \"carom_version\": " << json_string(kVersion) << ",\n";
   j << "  \"scene\": " << json_string(scene.name) << ",\n";
+  if (!stretch.run_json.empty()) j << "  \"run\": " << stretch.run_json << ",\n";
   j << "  \"status\": " << json_string(stretch.status) << ",\n";
   j << "  \"message\": " << json_string(stretch.message) << ",\n";
   j << "  \"start_time\": " << json_number(stretch.start_time) << ",\n";

@@ -4,6 +4,8 @@
 /// Everything rate-like or averaged refers to the stretch of simulated time this process ran,
 /// [start_time, end_time] (from 0 for `carom run`, from the checkpoint for `carom resume`);
 /// counts are given for that stretch and in total since t = 0. Keys:
+///   run                      the run's identity, as in run.h5 and checkpoint.h5: {id (hex),
+///                            scene_hash (hex), seed, method}
 ///   status                   "completed" | "interrupted" | "inelastic_collapse" | "failed"
 ///   message                  why it stopped, when not "completed"
 ///   start_time, end_time     s
@@ -75,6 +77,7 @@ struct RunStretch {
   TimeAverages averages;
   const GasCoupling* gas = nullptr;    ///< The run's gas, if any.
   CouplingTimes gas_start;             ///< Its timers when the stretch began.
+  std::string run_json;                ///< The "run" object: the run's identity; empty: none.
   std::string analysis_json;           ///< The "analysis" object (run_analysis.hpp); empty: none.
   const FlowBoundaries* flow = nullptr;  ///< The run's inflows and outflows, if any.
   FlowStart flow_start;                ///< Their counters when the stretch began.

@@ -54,10 +54,18 @@ const std::vector<std::string> kSections = {
     "flight", "initial",     "time",        "output",  "engine",  "gas",       "analysis",
     "method", "soft_sphere", "monte_carlo", "inflow",  "outflow", "flow"};
 
+/// Longest meta.name, bytes.
+constexpr std::size_t kMaxSceneName = 1024;
+
 void read_meta(TableReader& root, Scene& scene, const std::string& fallback_name) {
   scene.name = fallback_name;
   if (auto meta = root.table("meta")) {
     scene.name = meta->string("name", fallback_name);
+    // The name is an HDF5 attribute of every output (HDF5 keeps attributes under 64 kB) and
+    // heads reports: a short label, not a document.
+    if (scene.name.size() > kMaxSceneName)
+      meta->fail("name", "is " + std::to_string(scene.name.size()) + " bytes long; a name has at most " +
+                             std::to_string(kMaxSceneName) + " (put longer text in meta.description)");
     scene.description = meta->string("description", "");
     meta->finish();
   }

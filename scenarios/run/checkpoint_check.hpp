@@ -1,0 +1,34 @@
+#pragma once
+/// What a checkpoint and the run file it continues must satisfy before `carom resume` rebuilds
+/// a method from them: every index in range, every count consistent, every physical quantity
+/// finite and meaningful. A failure is a SceneError (exit 2) that names the file, the dataset
+/// and what is wrong, so a damaged state is refused instead of crashing or resuming to a wrong
+/// result. These checks add to the checksum (file_checksum.hpp), which catches damage to any
+/// stored value but not a file written wrongly and sealed.
+#include <string>
+
+#include "core/system.hpp"
+#include "scenarios/run/run_output.hpp"
+
+namespace carom {
+
+/// Largest speed carom accepts anywhere (initial states, checkpoints), m/s. No granular flow
+/// comes near it (the speed of sound in steel is 6e3 m/s): a larger speed is damage or a typo.
+inline constexpr double kMaxSpeed = 1e6;
+
+/// Checks the method's state in `checkpoint` against `system` (the scene's box, species and
+/// walls): time finite and >= 0; per particle position finite and inside the box (periodic
+/// axes: within one box length of it; walled axes: within two largest radii), velocity finite
+/// and at most kMaxSpeed, spin finite with |spin| r at most kMaxSpeed, radius, mass and inertia
+/// positive and finite, clock finite and not after the time, species index below the species
+/// count, ids unique; for the event-driven engine each event's and crossing's partner in range
+/// of its kind (particle, wall, face), its time not NaN and not before the particle's clock; no
+/// floating-point value anywhere in /state, /gas or /flow NaN. Throws SceneError.
+void check_checkpoint_state(const Checkpoint& checkpoint, const System& system);
+
+/// Checks that the run file at `run_path` belongs to the run of `checkpoint` (same run id, seed
+/// and method) and that its time series and snapshot times are finite and ordered. Throws
+/// SceneError.
+void check_run_file_matches(const std::string& run_path, const Checkpoint& checkpoint);
+
+}  // namespace carom

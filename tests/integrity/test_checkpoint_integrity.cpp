@@ -1,0 +1,143 @@
+// Checkpoints carry their own proof: a damaged value is refused by `carom resume` with exit 2 and
+// a message naming the dataset, never a crash and never a completed run from a damaged state.
+// - Value checks (the checksum rewritten after the damage, so that only they can catch it): a
+//   partner index >= N, a mass of 0 or -1, an inertia of NaN, a speed of 1e300 m/s, a NaN time
+//   in run.h5, for every method where the dataset exists.
+// - The checksum: a changed value with the old checksum, and a checkpoint without one, refused.
+// - Identity: run.h5, checkpoint.h5 and summary.json carry one run id; a checkpoint of another
+//   run in the folder is refused.
+// - An intact checkpoint of every method still resumes (exit 0).
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "tests/integrity/integrity_support.hpp"
+
+namespace {
+
+using namespace carom_integrity_test;
+
+class DamagedCheckpoint : public Cli {
+ protected:
+  /// Runs the small gas with `method` to t = 1 s into folder `out`.
+  void run_gas(const std::string& method, const std::string& out, const std::string& extra = "") {
+    ASSERT_EQ(carom("run " + scene("gas.toml", kGas) + " --method " + method + " --out " + out + " --quiet" + extra), 0)
+        << out_;
+  }
+  /// A copy of folder `from` named `to`, to damage.
+  std::string copy_of(const std::string& from, const std::string& to) {
+    fs::copy(dir_ / from, dir_ / to, fs::copy_options::recursive);
+    return (dir_ / to / "checkpoint.h5").string();
+  }
+  /// `carom resume` of `out` must exit 2 naming `dataset`, with no crash.
+  void expect_refused(const std::string& out, const std::string& dataset) {
+    const int code = carom("resume " + out + " --end 1.2 --quiet");
+    EXPECT_EQ(code, 2) << out_;
+    EXPECT_NE(out_.find(dataset), std::string::npos) << out_;
+    EXPECT_EQ(out_.find("completed"), std::string::npos) << out_;
+  }
+};
+
+TEST_F(DamagedCheckpoint, EachDamagedValueIsRefusedForEveryMethod) {
+  for (const std::string& method : kMethods) {
+    SCOPED_TRACE(method);
+    run_gas(method, method);
+    const std::string ckpt = (dir_ / method / "checkpoint.h5").string();
+    const carom::h5::File probe = carom::h5::File::open(ckpt, false);
+    const std::size_t n = probe.open_group("state/particles").open_dataset("mass").shape()[0];
+    const bool events = probe.contains("state/events");
+
+    damage<double>(copy_of(method, method + "_mass0"), "/state/particles/mass", 3, 0.0);
+    expect_refused(method + "_mass0", "/state/particles/mass");
+    damage<double>(copy_of(method, method + "_mass-1"), "/state/particles/mass", 5, -1.0);
+    expect_refused(method + "_mass-1", "/state/particles/mass");
+    damage<double>(copy_of(method, method + "_inertia"), "/state/particles/inertia", 7,
+                   std::numeric_limits<double>::quiet_NaN());
+    expect_refused(method + "_inertia", "/state/particles/inertia");
+    damage<double>(copy_of(method, method + "_speed"), "/state/particles/velocity", 4, 1e300);
+    expect_refused(method + "_speed", "/state/particles/velocity");
+    damage<double>(copy_of(method, method + "_radius"), "/state/particles/radius", 2, -0.5);
+    expect_refused(method + "_radius", "/state/particles/radius");
+    damage<double>(copy_of(method, method + "_place"), "/state/particles/position", 0, 1e9);
+    expect_refused(method + "_place", "/state/particles/position");
+    if (events) {
+      const long pair = first_of_kind(ckpt, "state/events", 1);
+      ASSERT_GE(pair, 0);
+      damage<std::int32_t>(copy_of(method, method + "_partner"), "/state/events/partner", pair,
+                           static_cast<std::int32_t>(n));
+      expect_refused(method + "_partner", "/state/events/partner");
+    }
+  }
+}
+
+TEST_F(DamagedCheckpoint, AnIntactCheckpointOfEveryMethodStillResumes) {
+  for (const std::string& method : kMethods) {
+    SCOPED_TRACE(method);
+    run_gas(method, method);
+    EXPECT_EQ(carom("resume " + method + " --end 1.2 --quiet"), 0) << out_;
+    EXPECT_NE(read(dir_ / method / "summary.json").find("\"status\": \"completed\""), std::string::npos);
+  }
+}
+
+TEST_F(DamagedCheckpoint, AChangedValueUnderTheOldChecksumIsRefused) {
+  run_gas("event_driven", "run");
+  const std::string ckpt = copy_of("run", "flipped");
+  double x = carom::h5::File::open(ckpt, false).open_group("state/particles").read<double>("position")[6];
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, 8);
+  bits ^= 1;  // the last bit of the mantissa: a value still inside the box
+  std::memcpy(&x, &bits, 8);
+  damage<double>(ckpt, "/state/particles/position", 6, x, false);
+  expect_refused("flipped", "checksum");
+}
+
+TEST_F(DamagedCheckpoint, ACheckpointWithoutChecksumIsRefused) {
+  run_gas("monte_carlo", "run");
+  const std::string ckpt = copy_of("run", "unsealed");
+  {
+    const carom::h5::File file = carom::h5::File::open(ckpt, true);
+    ASSERT_GE(H5Adelete(file.id(), carom::kChecksumAttribute), 0);
+  }
+  expect_refused("unsealed", "has no checksum");
+}
+
+TEST_F(DamagedCheckpoint, ADamagedRunFileTimeIsRefused) {
+  run_gas("event_driven", "run");
+  copy_of("run", "bad_times");
+  damage<double>((dir_ / "bad_times" / "run.h5").string(), "/timeseries/time", 3,
+                 std::numeric_limits<double>::quiet_NaN(), false);
+  expect_refused("bad_times", "/timeseries/time");
+}
+
+TEST_F(DamagedCheckpoint, TheCheckpointOfAnotherRunIsRefused) {
+  run_gas("event_driven", "first");
+  run_gas("event_driven", "second", " --seed 7");
+  fs::copy_file(dir_ / "second" / "checkpoint.h5", dir_ / "first" / "checkpoint.h5",
+                fs::copy_options::overwrite_existing);
+  expect_refused("first", "different runs");
+  // The same scene and seed run twice are two runs too: each run draws its own id.
+  run_gas("event_driven", "third");
+  fs::copy_file(dir_ / "third" / "checkpoint.h5", dir_ / "second" / "checkpoint.h5",
+                fs::copy_options::overwrite_existing);
+  expect_refused("second", "different runs");
+}
+
+TEST_F(DamagedCheckpoint, RunFileCheckpointAndSummaryShareOneIdentity) {
+  run_gas("soft_sphere", "run");
+  const carom::h5::File run = carom::h5::File::open((dir_ / "run" / "run.h5").string(), false);
+  const carom::h5::File ckpt = carom::h5::File::open((dir_ / "run" / "checkpoint.h5").string(), false);
+  const auto id = run.attribute<std::uint64_t>("run_id");
+  EXPECT_NE(id, 0u);
+  EXPECT_EQ(ckpt.attribute<std::uint64_t>("run_id"), id);
+  EXPECT_EQ(ckpt.attribute<std::uint64_t>("scene_hash"), run.attribute<std::uint64_t>("scene_hash"));
+  EXPECT_EQ(ckpt.attribute<std::string>("method"), "soft_sphere");
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(id));
+  EXPECT_NE(read(dir_ / "run" / "summary.json").find("\"run\": {\"id\": \"" + std::string(hex) + "\""),
+            std::string::npos)
+      << read(dir_ / "run" / "summary.json");
+}
+
+}  // namespace

@@ -113,7 +113,7 @@ TEST_F(ChartFile, MistakesNameFileLineKeyAndWhatIsAllowed) {
       {kHead + "seed = 3\n" + kObservable + kVariants, f + ":5", "chart.seed", "chart.seeds"},
       {"[chart]\nscene = \"gas.toml\"\nseeds = [1]\nreference = \"exact\"\n" + kObservable +
            kVariants,
-       f + ":3", "chart.seeds = [ 1 ]", "at least two"},
+       f + ":3", "chart.seeds = [1]", "at least two"},
       {"[chart]\nscene = \"gas.toml\"\nseeds = [1, 1]\nreference = \"exact\"\n" + kObservable +
            kVariants,
        f + ":3", "chart.seeds", "twice"},

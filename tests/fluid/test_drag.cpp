@@ -1,7 +1,6 @@
 // Drag closures against tests/VALIDATION.md and hand calculations (fluid/drag.hpp).
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -361,28 +360,6 @@ TEST(DragClosures, NamesRoundTripAndBadNamesRejected) {
     }
   }
   EXPECT_THROW(DragClosure(DragClosureKind::Ergun, 1.0), std::invalid_argument);  // eps_mf = 1
-}
-
-// Cost of one K per particle (the coupling calls it twice per particle per fluid step).
-// Printed, not asserted: timings depend on the machine.
-TEST(DragClosures, TimingPerCall) {
-  for (DragClosureKind kind : {DragClosureKind::SchillerNaumann, DragClosureKind::GidaspowBlend,
-                               DragClosureKind::Beetstra, DragClosureKind::DiFelice}) {
-    const DragClosure closure(kind);
-    DragInput in = glass_in_air(0.5, 0.2);
-    const int calls = 200000;
-    double sum = 0.0;
-    const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < calls; ++i) {
-      in.slip = 0.2 + 1e-7 * i;
-      sum += closure.drag_coefficient(in);
-    }
-    const double ns =
-        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
-        calls;
-    EXPECT_GT(sum, 0.0);
-    std::printf("[ timing ] %s: %.0f ns per K\n", std::string(drag_closure_name(kind)).c_str(), ns);
-  }
 }
 
 }  // namespace

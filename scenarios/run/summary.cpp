@@ -9,6 +9,7 @@
 
 #include "carom/version.hpp"
 #include "scenarios/analysis/enskog.hpp"
+#include "scenarios/run/summary_units.hpp"
 
 namespace carom {
 
@@ -169,6 +170,8 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
   if (stretch.flow != nullptr)
     j << ",\n  \"flow\": " << flow_summary_json(*stretch.flow, stretch.flow_start, stretch.start_time, sim.time());
   if (!stretch.analysis_json.empty()) j << ",\n  \"analysis\": " << stretch.analysis_json;
+  // Last, below the numbers a reader looks for first: the unit of every key (summary_units.hpp).
+  j << ",\n  \"units\": " << summary_units_json();
   j << "\n}\n";
   return j.str();
 }
@@ -179,7 +182,11 @@ void write_text_atomically(const std::string& path, const std::string& text) {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
-    if (!out) throw std::runtime_error(temporary + ": cannot write");
+    if (!out) {
+      out.close();
+      std::remove(temporary.c_str());  // a full disk: leave no half file behind
+      throw std::runtime_error(temporary + ": cannot write");
+    }
   }
   std::filesystem::rename(temporary, path);
 }

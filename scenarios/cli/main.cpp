@@ -12,6 +12,8 @@
 // Exit codes: 0 ok, 1 runtime failure (inelastic collapse, I/O), 2 bad scene or usage (nothing
 // is written), 130 interrupted by SIGINT/SIGTERM (a checkpoint is written). See run.hpp.
 #include <CLI/CLI.hpp>
+#include <hdf5.h>
+
 #include <filesystem>
 #include <iostream>
 
@@ -35,6 +37,9 @@ constexpr const char* kExitCodes =
 }
 
 int main(int argc, char** argv) {
+  // Every HDF5 handle is closed by its owner before main returns; HDF5's own exit handler would
+  // close again what a failed write (a full disk) left half-closed, and crash.
+  H5dont_atexit();
   CLI::App app{"carom: event-driven hard-sphere granular simulator"};
   app.footer(kExitCodes);
   app.set_version_flag("--version", std::string("carom ") + kVersion);

@@ -9,12 +9,9 @@
 
 #include "core/system.hpp"
 #include "scenarios/run/run_output.hpp"
+#include "scenarios/scene/state_bounds.hpp"
 
 namespace carom {
-
-/// Largest speed carom accepts anywhere (initial states, checkpoints), m/s. No granular flow
-/// comes near it (the speed of sound in steel is 6e3 m/s): a larger speed is damage or a typo.
-inline constexpr double kMaxSpeed = 1e6;
 
 /// Checks the method's state in `checkpoint` against `system` (the scene's box, species and
 /// walls): time finite and >= 0; per particle position finite and inside the box (periodic

@@ -99,14 +99,28 @@ std::string byte_text(double bytes) {
   return text;
 }
 
+namespace {
+/// "about 1.2 GB: 400 snapshots of ... (output.snapshot_every = ...) and ... over time.end = ...".
+std::string estimate_parts(const Scene& scene, const OutputEstimate& e) {
+  const OutputSchedule& out = scene.output;
+  return "about " + byte_text(e.bytes) + ": " + format_number(e.snapshots) + " snapshots of " +
+         byte_text(e.snapshot_bytes) + " (output.snapshot_every = " + format_number(out.snapshot_every) + " s) and " +
+         format_number(e.samples) + " time-series rows of " + byte_text(e.sample_bytes) +
+         " (output.sample_every = " + format_number(out.sample_every) + " s) over time.end = " +
+         format_number(scene.end_time) + " s";
+}
+}  // namespace
+
+std::string output_size_warning(const Scene& scene, const OutputEstimate& e) {
+  if (e.bytes <= scene.output.warn_bytes) return "";
+  return scene.file + ": the run will write " + estimate_parts(scene, e) + ", more than output.warn_bytes = " +
+         byte_text(scene.output.warn_bytes) + ". Write snapshots and samples less often if that is more than you "
+         "need, or raise output.warn_bytes (bytes) in [output] to silence this warning";
+}
+
 void check_output_size(const Scene& scene, const OutputEstimate& e, const fs::path& out_dir) {
   const OutputSchedule& out = scene.output;
-  const std::string parts = "about " + byte_text(e.bytes) + ": " + format_number(e.snapshots) + " snapshots of " +
-                            byte_text(e.snapshot_bytes) + " (output.snapshot_every = " +
-                            format_number(out.snapshot_every) + " s) and " + format_number(e.samples) +
-                            " time-series rows of " + byte_text(e.sample_bytes) + " (output.sample_every = " +
-                            format_number(out.sample_every) + " s) over time.end = " + format_number(scene.end_time) +
-                            " s";
+  const std::string parts = estimate_parts(scene, e);
   if (e.bytes > out.max_bytes)
     throw SceneError(out.max_bytes_where + ": the run would write " + parts + ", more than output.max_bytes = " +
                      byte_text(out.max_bytes) + (out.max_bytes_given ? "" : " (the default)") +

@@ -45,4 +45,8 @@ std::string byte_text(double bytes);
 /// The message names the scene's file and line, the estimate's parts and the key that raises it.
 void check_output_size(const Scene& scene, const OutputEstimate& estimate, const std::filesystem::path& out_dir);
 
+/// The warning to print before a run whose estimate exceeds output.warn_bytes (1 GB unless
+/// given), with the estimate's parts and the keys that set it; empty when below.
+std::string output_size_warning(const Scene& scene, const OutputEstimate& estimate);
+
 }  // namespace carom

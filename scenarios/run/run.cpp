@@ -2,14 +2,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <random>
 #include <sstream>
 
+#include <sys/time.h>
 #include <unistd.h>
 
 #include "scenarios/run/checkpoint_check.hpp"
@@ -34,7 +38,7 @@ volatile std::sig_atomic_t g_stop = 0;
 /// First signal: ask the run to stop (run_until checks the flag every few thousand events), write a
 /// checkpoint and exit. Second signal (the user insists): leave at once, without a checkpoint.
 extern "C" void on_stop_signal(int) {
-  if (g_stop) {
+  if (g_stop == 1) {
     static const char message[] = "\ncarom: second interrupt: stopping without a checkpoint\n";
     const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
     (void)ignored;
@@ -42,6 +46,51 @@ extern "C" void on_stop_signal(int) {
   }
   g_stop = 1;
 }
+
+/// The stall watch's timer (SIGALRM): makes run_until return (g_stop = 2) so that the run loop
+/// can look at the simulated time even inside one long chunk; the loop clears it and goes on.
+/// Returning there changes no bit of the run (as for a chunk's end). A stop asked by a signal
+/// (g_stop = 1) is never overwritten.
+extern "C" void on_watch_alarm(int) {
+  if (g_stop == 0) g_stop = 2;
+}
+
+/// Arms the watch timer every `seconds` of wall time for its lifetime.
+class WatchTimer {
+ public:
+  explicit WatchTimer(double seconds) {
+    struct sigaction action {};
+    action.sa_handler = on_watch_alarm;
+    sigemptyset(&action.sa_mask);
+    sigaddset(&action.sa_mask, SIGINT);
+    sigaddset(&action.sa_mask, SIGTERM);
+    action.sa_flags = SA_RESTART;
+    sigaction(SIGALRM, &action, nullptr);
+    itimerval every{};
+    every.it_interval.tv_sec = static_cast<time_t>(seconds);
+    every.it_interval.tv_usec = static_cast<suseconds_t>((seconds - std::floor(seconds)) * 1e6);
+    every.it_value = every.it_interval;
+    setitimer(ITIMER_REAL, &every, nullptr);
+  }
+  ~WatchTimer() {
+    itimerval off{};
+    setitimer(ITIMER_REAL, &off, nullptr);
+    signal(SIGALRM, SIG_IGN);
+  }
+  /// Clears a watch stop (g_stop = 2), never a signal's, with the signals held meanwhile.
+  static void clear() {
+    sigset_t held, previous;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    sigaddset(&held, SIGALRM);
+    sigprocmask(SIG_BLOCK, &held, &previous);
+    if (g_stop == 2) g_stop = 0;
+    sigprocmask(SIG_SETMASK, &previous, nullptr);
+  }
+  WatchTimer(const WatchTimer&) = delete;
+  WatchTimer& operator=(const WatchTimer&) = delete;
+};
 
 /// A random run id (never 0, which marks files from before run ids). Drawn from the system's
 /// entropy, not the scene's seed: it identifies the run and touches no physics.
@@ -88,6 +137,57 @@ struct Schedule {
     }
     pass(t);
   }
+};
+
+/// A run whose simulated time has stopped advancing: the detector below ends it (exit 1).
+class RunStalled : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Watches the simulated time against the wall time: when over kWindow seconds of wall time
+/// the run advanced by less than kFraction of its whole length, it would need more than
+/// kWindow / kFraction (190 years) to end, so it is stopped with the cause named: the fastest
+/// particle's speed and the events per simulated second. A run that merely slows down (a dense
+/// phase, a small time step) stays far above this rate.
+class StallWatch {
+ public:
+  static constexpr double kWindow = 60.0;    ///< Wall-clock seconds between checks.
+  static constexpr double kFraction = 1e-8;  ///< Least advance per window, of end - start.
+
+  StallWatch(const CollisionMethod& sim, double end_time)
+      : length_(end_time - sim.time()), time_(sim.time()), events_(sim.statistics().events) {
+    // For tests only: a shorter window (CAROM_STALL_WINDOW_SECONDS).
+    if (const char* text = std::getenv("CAROM_STALL_WINDOW_SECONDS")) window_ = std::max(0.1, std::atof(text));
+  }
+  /// Wall-clock seconds between looks.
+  double window() const { return window_; }
+  void check(const CollisionMethod& sim, double wall) {
+    if (wall - wall_ < window_) return;
+    const double advanced = sim.time() - time_;
+    const std::uint64_t events = sim.statistics().events - events_;
+    if (advanced < kFraction * length_) {
+      double fastest = 0;
+      for (std::size_t i = 0; i < sim.particle_count(); ++i) fastest = std::max(fastest, sim.velocity(i).norm());
+      throw RunStalled("the run has stalled at t = " + format_number(sim.time()) + " s: its simulated time advanced " +
+                       format_number(advanced) + " s in the last " + format_number(wall - wall_) +
+                       " s of wall time (" + std::to_string(events) + " events), less than " + format_number(kFraction) +
+                       " of the run's length " + format_number(length_) + " s per " + format_number(window_) +
+                       " s; it would not reach its end. The fastest particle moves at " + format_number(fastest) +
+                       " m/s: an absurd speed or temperature, or a time step or collision rate far too fine for the "
+                       "run's length");
+    }
+    wall_ = wall;
+    time_ = sim.time();
+    events_ = sim.statistics().events;
+  }
+
+ private:
+  double window_ = kWindow;
+  double length_;
+  double time_;
+  std::uint64_t events_;
+  double wall_ = 0;
 };
 
 /// The loop shared by run and resume. `fresh`: a new run, whose t = 0 outputs are written here.
@@ -161,6 +261,20 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
   // A signal also stops run_until itself within a few thousand events, so even a chunk that
   // takes long (a dense, slow phase) is interrupted promptly, at a consistent state.
   sim.set_stop_flag(&g_stop);
+  // A failure ends the run with summary.json written where there is room, and says so where not.
+  auto end_with = [&](const std::string& status, const std::string& message) {
+    try {
+      finish(status, message);
+    } catch (const std::exception& e) {
+      std::cerr << "carom: " << message << "\n";
+      std::cerr << "carom: summary.json could not be written either: " << e.what() << "\n";
+      return kExitFailure;
+    }
+    std::cerr << "carom: " << message << "\n";
+    return kExitFailure;
+  };
+  StallWatch stall(sim, end_time);
+  const WatchTimer watch_timer(std::min(stall.window(), 10.0));
   try {
     while (sim.time() < end_time) {
       const double chunk_end = sim.stop_time(sim.time() + chunk);
@@ -193,7 +307,9 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
       if (chunk_limited)
         chunk *= std::clamp(0.2 / std::max(spent, 1e-6), 0.5, 2.0);
-      if (g_stop) {
+      WatchTimer::clear();
+      stall.check(sim, wall_seconds());
+      if (g_stop == 1) {
         checkpoint();
         finish("interrupted", "stopped by a signal at t = " + format_number(t) + " s; continue with: carom resume " + dir.string());
         std::cerr << "carom: interrupted at t = " << t << " s; checkpoint written. Continue with: carom resume "
@@ -201,23 +317,21 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
         return kExitInterrupted;
       }
     }
+    if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
+    if (last_sample < sim.time()) append_sample();
+    checkpoint();
+    finish("completed", "");
   } catch (const InelasticCollapse& e) {
-    finish("inelastic_collapse", e.what());
-    std::cerr << "carom: " << e.what() << "\n";
-    return kExitFailure;
+    return end_with("inelastic_collapse", e.what());
   } catch (const KickUnstable& e) {
-    finish("kick_unstable", e.what());
-    std::cerr << "carom: " << e.what() << "\n";
-    return kExitFailure;
+    return end_with("kick_unstable", e.what());
   } catch (const MethodFailure& e) {
-    finish(e.status, e.what());
-    std::cerr << "carom: " << e.what() << "\n";
-    return kExitFailure;
+    return end_with(e.status, e.what());
+  } catch (const RunStalled& e) {
+    return end_with("stalled", e.what());
+  } catch (const std::exception& e) {  // an output that cannot be written: a full disk, an HDF5 error
+    return end_with("failed", std::string("failed: ") + e.what());
   }
-  if (last_snapshot < sim.time()) file.write_snapshot(sim, gas);
-  if (last_sample < sim.time()) append_sample();
-  checkpoint();
-  finish("completed", "");
   if (flow != nullptr)  // an inlet slab that was full: the set mass flow was not met
     for (std::size_t k = 0; k < flow->inflows().size(); ++k)
       if (const std::string message = flow->blocked_message(k); !message.empty())
@@ -288,7 +402,10 @@ int run_scene(Scene scene, const RunOptions& options) {
   // Everything that can be wrong with a scene is found before the first file is created. A
   // signal meanwhile (placing, settling) stops it with nothing written.
   install_stop_handlers();
-  check_output_size(scene, estimate_output(scene, planned_particle_count(scene)), options.out_dir);
+  const OutputEstimate estimate = estimate_output(scene, planned_particle_count(scene));
+  check_output_size(scene, estimate, options.out_dir);
+  if (const std::string warning = output_size_warning(scene, estimate); !warning.empty() && !options.quiet)
+    std::cerr << "carom: warning: " << warning << "\n";
   build_initial_state(scene, stop_flag());
   if (g_stop)
     throw InterruptedBeforeStart("interrupted while the particles were placed, before the run's t = 0: nothing "

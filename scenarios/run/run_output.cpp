@@ -142,7 +142,10 @@ struct RunFile::Impl {
   /// Writes the waiting rows, then flushes the file.
   void flush();
 
+  /// Brings run.xmf (and run_gas.xmf) up to date with `snapshots`.
   void write_xdmf() const;
+  /// Snapshots the sidecars on disk list (0 also when unknown: they are rewritten).
+  mutable std::size_t xdmf_listed = 0;
   void recover_previous_sample();
   void drop_samples_from(double time);
   void drop_snapshots_from(double time);
@@ -494,11 +497,22 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
 }
 
 void RunFile::Impl::write_xdmf() const {
+  const XdmfGasGrid grid{gas_cells, gas_lower, gas_spacing};
+  // One more snapshot than the sidecars list: appended in O(1). Otherwise (the first write, a
+  // resumed run that dropped snapshots) they are rewritten whole.
+  if (xdmf_listed + 1 == snapshots.size() && xdmf_listed > 0) {
+    const SnapshotEntry& last = snapshots.back();
+    if (append_xdmf_snapshot(path, {last.name, last.time, last.count}, has_gas ? &grid : nullptr)) {
+      xdmf_listed = snapshots.size();
+      return;
+    }
+  }
+  xdmf_listed = 0;  // unknown while they are rewritten
   std::vector<XdmfSnapshot> entries;
   entries.reserve(snapshots.size());
   for (const SnapshotEntry& s : snapshots) entries.push_back({s.name, s.time, s.count});
-  const XdmfGasGrid grid{gas_cells, gas_lower, gas_spacing};
   write_xdmf_sidecars(path, entries, has_gas ? &grid : nullptr);
+  xdmf_listed = snapshots.size();
 }
 
 }  // namespace carom

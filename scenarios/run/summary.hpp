@@ -6,7 +6,9 @@
 /// counts are given for that stretch and in total since t = 0. Keys:
 ///   run                      the run's identity, as in run.h5 and checkpoint.h5: {id (hex),
 ///                            scene_hash (hex), seed, method}
-///   status                   "completed" | "interrupted" | "inelastic_collapse" | "failed"
+///   status                   "completed" | "interrupted" | "inelastic_collapse" | "failed" (an
+///                            output could not be written) | "stalled" (simulated time stopped
+///                            advancing, run.cpp's StallWatch) | a method's own failure
 ///   message                  why it stopped, when not "completed"
 ///   start_time, end_time     s
 ///   wall_seconds             wall-clock time of this process's run loop, s

@@ -49,6 +49,13 @@ std::string vertex_dataset_of(std::size_t count);
 /// there already (a run's count does not change: one dataset of 8 * count bytes per run).
 void write_vertex_cells(const h5::File& file, std::size_t count);
 
+/// Appends one snapshot to the sidecars beside `h5_path` in O(1): its grid is written over
+/// their closing tail, followed by the tail, so each file stays whole XML after every snapshot
+/// without being rewritten. False (nothing changed) when a sidecar does not end as carom
+/// writes it (then rewrite them with write_xdmf_sidecars). Throws std::runtime_error when a
+/// write fails (the tail is put back).
+bool append_xdmf_snapshot(const std::string& h5_path, const XdmfSnapshot& snapshot, const XdmfGasGrid* gas);
+
 /// Rewrites run.xmf (and, when `gas` is given, run_gas.xmf) beside the run file `h5_path` so
 /// that they list `snapshots`; each file is written aside and renamed over the old one, so a
 /// viewer never reads half a file.

@@ -7,6 +7,7 @@
 #include "scenarios/scene/placement.hpp"
 #include "scenarios/scene/scene.hpp"
 #include "scenarios/scene/settling.hpp"
+#include "scenarios/scene/state_bounds.hpp"
 
 namespace carom {
 
@@ -73,6 +74,38 @@ std::string with_sources(const std::string& message, const Scene& scene, std::si
     annotate(first_from_file + k, "row " + std::to_string(k) + " of initial.from_file (" + scene.from_file->where + ")");
   return out;
 }
+/// Refuses a temperature or an rms velocity that would give the fill's particles speeds above
+/// kMaxSpeed (the lightest filled species moves fastest: sqrt(3 T / m)).
+void check_fill_speeds(const Scene& scene, const std::vector<std::size_t>& counts) {
+  for (std::size_t s = 0; s < counts.size(); ++s) {
+    if (counts[s] == 0) continue;
+    const double mass = scene.system.species[s].mass();
+    const double speed = scene.rms_velocity > 0 ? scene.rms_velocity : std::sqrt(3.0 * scene.temperature / mass);
+    if (!(speed <= kMaxSpeed))
+      throw SceneError(scene.file + ": initial." + (scene.rms_velocity > 0 ? "rms_velocity" : "temperature") +
+                       ": gives species \"" + scene.system.species[s].name + "\" an rms speed of " + format_number(speed) +
+                       " m/s, above the bound of " + format_number(kMaxSpeed) +
+                       " m/s on any particle's speed (no granular flow comes near it; check the units: temperature is "
+                       "m <v_x^2> in J)");
+  }
+}
+
+/// Refuses a particle whose velocity or spin is not finite or faster than kMaxSpeed.
+void check_particle_speeds(const Scene& scene, std::size_t first_from_file, std::size_t from_file) {
+  const ParticleStore& p = scene.system.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double speed = p.velocity[i].norm(), surface = p.spin[i].norm() * p.radius[i];
+    if (speed <= kMaxSpeed && surface <= kMaxSpeed) continue;
+    const std::string what = speed <= kMaxSpeed ? "spins with a surface speed |spin| r of " + format_number(surface)
+                                                 : "moves at " + format_number(speed);
+    throw SceneError(scene.file + ": initial state: " +
+                     with_sources("particle " + std::to_string(i) + " (species \"" + scene.system.species[p.species[i]].name +
+                                      "\") " + what + " m/s: not finite or above the bound of " + format_number(kMaxSpeed) +
+                                      " m/s on any particle's speed",
+                                  scene, first_from_file, from_file));
+  }
+}
+
 }  // namespace
 
 void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
@@ -80,6 +113,7 @@ void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
   system.particles = ParticleStore{};
   const std::vector<std::size_t> counts = fill_counts(scene);
   check_fill_capacities(scene, counts);  // before anything is allocated for them
+  check_fill_speeds(scene, counts);
   std::vector<double> radii;
   for (const ListedParticle& p : scene.listed) radii.push_back(system.species[p.species].radius());
   std::vector<FileParticle> from_file;
@@ -137,6 +171,7 @@ void build_initial_state(Scene& scene, const volatile std::sig_atomic_t* stop) {
   const bool soft = scene.method.kind == MethodKind::SoftSphere;
   const double run_tolerance = soft ? 0.5 * scene.method.soft_sphere.max_overlap : kContactTolerance;
   const double tolerance = from_file.empty() ? 0.0 : run_tolerance;
+  check_particle_speeds(scene, first_from_file, from_file.size());
   try {
     validate_initial_state(system, tolerance);
   } catch (const std::invalid_argument& e) {

@@ -72,6 +72,8 @@ struct OutputSchedule {
   double max_bytes = 1e10;
   bool max_bytes_given = false;  ///< output.max_bytes set in the scene: also lifts the free-space check.
   std::string max_bytes_where;   ///< "file:line" of output.max_bytes (of [output] or the scene when absent).
+  /// Estimated output above which `carom run` warns before it starts, bytes (output.warn_bytes).
+  double warn_bytes = 1e9;
 };
 
 /// [flight]: how particles move between events (DESIGN.md section 2).

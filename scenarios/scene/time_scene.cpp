@@ -23,6 +23,8 @@ void read_time_and_output(TableReader& root, Scene& scene) {
     out.max_bytes_given = o->has("max_bytes");
     out.max_bytes = o->number("max_bytes", out.max_bytes, Range::positive("largest estimated output of the run, bytes"));
     out.max_bytes_where = o->where_key("max_bytes");
+    out.warn_bytes = o->number("warn_bytes", out.warn_bytes,
+                               Range::positive("estimated output above which a run warns before it starts, bytes"));
     o->finish();
   }
   if (out.sample_every == 0.0) out.sample_every = out.snapshot_every > 0 ? out.snapshot_every / 10.0 : scene.end_time / 1000.0;

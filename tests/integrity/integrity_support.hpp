@@ -24,6 +24,21 @@ inline const std::string kGas =
     "[time]\nend = 1.0\n"
     "[output]\nsnapshot_every = 0.5\nsample_every = 0.1\ncheckpoint_every = 0.5\n";
 
+/// The command-line fixture, whose carom() also takes environment settings ("NAME=value ...").
+class IntegrityCli : public carom_cli_test::Cli {
+ protected:
+  using carom_cli_test::Cli::carom;
+  int carom(const std::string& args, const std::string& environment) {
+    const std::string log = (dir_ / "log.txt").string();
+    const std::string command = "cd '" + dir_.string() + "' && " + environment + " timeout -k 5 60 '" + kCarom + "' " +
+                                args + " > '" + log + "' 2>&1";
+    const int status = std::system(command.c_str());
+    out_ = read(log);
+    fs::remove(log);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+};
+
 inline const std::vector<std::string> kMethods = {"event_driven", "soft_sphere", "monte_carlo"};
 
 /// Replaces value `index` (flat, row-major) of dataset `path` of an HDF5 file by `value`, keeping

@@ -19,7 +19,7 @@ namespace {
 
 using namespace carom_integrity_test;
 
-class DamagedCheckpoint : public Cli {
+class DamagedCheckpoint : public IntegrityCli {
  protected:
   /// Runs the small gas with `method` to t = 1 s into folder `out`.
   void run_gas(const std::string& method, const std::string& out, const std::string& extra = "") {

@@ -15,7 +15,7 @@ namespace {
 
 using namespace carom_integrity_test;
 
-class OutputLockTest : public Cli {
+class OutputLockTest : public IntegrityCli {
  protected:
   /// Starts `carom ARGS...` in the test directory, in the background; returns its process id.
   pid_t start(const std::vector<std::string>& args) {

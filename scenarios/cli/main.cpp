@@ -23,6 +23,7 @@
 #include "scenarios/cli/info.hpp"
 #include "scenarios/cli/recommend.hpp"
 #include "scenarios/run/run.hpp"
+#include "scenarios/scene/input_file.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
 #include "scenarios/scene/settling.hpp"
@@ -181,10 +182,10 @@ int main(int argc, char** argv) {
     std::cerr << "carom: " << e.what() << "\n";
     return kExitInterrupted;
   } catch (const SceneError& e) {
-    std::cerr << "carom: error: " << e.what() << "\n";
+    std::cerr << "carom: error: " << shorten_long_tokens(e.what()) << "\n";
     return kExitUsage;
   } catch (const std::exception& e) {
-    std::cerr << "carom: failed: " << e.what() << "\n";
+    std::cerr << "carom: failed: " << shorten_long_tokens(e.what()) << "\n";
     return kExitFailure;
   }
   return kExitUsage;

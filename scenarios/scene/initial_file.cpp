@@ -1,4 +1,5 @@
 #include "scenarios/scene/initial_file.hpp"
+#include "scenarios/scene/input_file.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -91,8 +92,10 @@ std::vector<FileParticle> read_initial_file(const Scene& scene) {
   const InitialFile& from = *scene.from_file;
   const std::string context = from.where + ": initial.from_file.path = \"" + from.written + "\"" +
                               (from.written != from.path ? " (" + from.path + ")" : std::string());
-  if (!std::filesystem::is_regular_file(from.path))
+  std::error_code missing;
+  if (!std::filesystem::exists(from.path, missing))
     throw SceneError(context + ": no such file (a relative path is relative to the scene file's folder)");
+  require_regular_file(from.path, context);  // a directory, a device or a FIFO: refused before reading
   StoredParticles stored;
   try {
     std::string kind;

@@ -1,4 +1,5 @@
 #include "scenarios/scene/scene.hpp"
+#include "scenarios/scene/input_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +54,9 @@ const std::vector<std::string> kSections = {
     "meta",   "domain",      "species",     "regions", "walls",   "particles", "collisions",
     "flight", "initial",     "time",        "output",  "engine",  "gas",       "analysis",
     "method", "soft_sphere", "monte_carlo", "inflow",  "outflow", "flow"};
+
+/// Largest scene file, bytes: a scene is a page of keys (particles listed one by one included).
+constexpr std::size_t kMaxSceneBytes = 64u << 20;
 
 /// Longest meta.name, bytes.
 constexpr std::size_t kMaxSceneName = 1024;
@@ -134,11 +138,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (std::filesystem::is_directory(path, error))
     throw SceneError(path + ": is a directory, not a scene file (give the .toml file itself, e.g. " +
                      (std::filesystem::path(path) / "scene.toml").string() + ")");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), path, overrides, seed, override_origins);
+  std::string text;
+  try {
+    text = without_bom(read_regular_file(path, "the scene file", kMaxSceneBytes));
+  } catch (const SceneError& e) {
+    if (!std::filesystem::exists(path, error)) throw SceneError(path + ": cannot open the scene file");
+    throw;
+  }
+  return parse_scene(text, path, overrides, seed, override_origins);
 }
 
 }  // namespace carom

@@ -1,4 +1,5 @@
 #include "scenarios/scene/walls_scene.hpp"
+#include "scenarios/scene/input_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -110,6 +111,26 @@ void read_polygon(TableReader& w, const std::string& name, Scene& scene) {
   scene.system.walls.push_back(std::move(wall));
 }
 
+/// Largest STL file, bytes (a binary STL of 40 million triangles).
+constexpr std::size_t kMaxStlBytes = std::size_t{2} << 30;
+
+/// Refuses a mesh whose vertices all lie outside the domain (a wrong scale or translate).
+void check_mesh_meets_domain(TableReader& w, const std::vector<Triangle>& triangles, const Domain& domain) {
+  if (triangles.empty()) return;
+  Vec3 low = triangles.front()[0], high = low;
+  for (const Triangle& t : triangles)
+    for (const Vec3& v : t) {
+      low = low.cwiseMin(v);
+      high = high.cwiseMax(v);
+    }
+  for (int a = 0; a < 3; ++a)
+    if (high[a] < domain.lower[a] || low[a] > domain.upper[a])
+      w.fail("file", "lies wholly outside the domain: its vertices span " + std::string(1, "xyz"[a]) + " from " +
+                         format_number(low[a]) + " to " + format_number(high[a]) + " m, the domain from " +
+                         format_number(domain.lower[a]) + " to " + format_number(domain.upper[a]) +
+                         " m (check scale, in metres per unit of the file, and translate)");
+}
+
 /// A [[walls]] type = "mesh": the STL file (relative to the scene's folder) in metres, open or solid.
 void read_mesh(TableReader& w, const std::string& name, Scene& scene) {
   const std::string written = w.required_string("file");
@@ -123,11 +144,23 @@ void read_mesh(TableReader& w, const std::string& name, Scene& scene) {
       w.vector3("translate", Vec3::Zero(), Range::any("added to every vertex after scaling, m"));
   const bool solid = w.boolean("solid", false);
   std::vector<Triangle> triangles;
+  std::string bytes;
   try {
-    triangles = read_stl(path.string(), units);
+    std::error_code missing;
+    if (!std::filesystem::exists(path, missing)) read_stl(path.string(), units);  // names the missing file
+    bytes = read_regular_file(path.string(), "STL file", kMaxStlBytes);
   } catch (const StlError& e) {
     w.fail("file", std::string("cannot be used: ") + e.what());
+  } catch (const SceneError& e) {
+    w.fail("file", std::string("cannot be used: ") + e.what());
   }
+  try {
+    // A UTF-8 byte-order mark before "solid" (some editors write one) would make the file look binary.
+    triangles = parse_stl(without_bom(std::move(bytes)), path.string(), units);
+  } catch (const StlError& e) {
+    w.fail("file", std::string("cannot be used: ") + shorten_long_tokens(e.what(), 40));
+  }
+  check_mesh_meets_domain(w, triangles, scene.system.domain);
   std::optional<Wall> wall;
   try {
     wall = Wall::mesh(name, std::move(triangles), solid);

@@ -1,4 +1,5 @@
 #include "scenarios/sweep/sweep_spec.hpp"
+#include "scenarios/scene/input_file.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -205,13 +206,11 @@ std::string SweepSpec::describe_group(std::size_t group) const {
 }
 
 SweepSpec read_sweep(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open the sweep file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  std::error_code missing;
+  if (!std::filesystem::exists(path, missing)) throw SceneError(path + ": cannot open the sweep file");
+  const std::string document = without_bom(read_regular_file(path, "the sweep file", std::size_t{64} << 20));
   toml::table root;
   try {
-    const std::string document = text.str();
     root = toml::parse(std::string_view(document), std::string_view(path));
   } catch (const toml::parse_error& e) {
     throw SceneError(path + ":" + std::to_string(e.source().begin.line) + ":" +

@@ -28,6 +28,7 @@
 #include "scenarios/scene/scene.hpp"
 #include "scenarios/scene/settling.hpp"
 #include "scenarios/sweep/sweep.hpp"
+#include "scenarios/sweep/sweep_pool.hpp"
 
 using namespace carom;
 
@@ -117,6 +118,10 @@ int main(int argc, char** argv) {
       "(nothing run), or an observable no summary.json holds; 130 interrupted (run the same command again to "
       "continue).");
 
+  if (!follow_sweep_parent()) {
+    std::cerr << "carom: the sweep that started this case is gone: not started (run the sweep again)\n";
+    return kExitInterrupted;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,12 +14,22 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 
 #include "core/worker_pool.hpp"
 
 extern char** environ;
 
 namespace carom {
+
+bool follow_sweep_parent() {
+  const char* text = std::getenv(kSweepParentVariable);
+  if (text == nullptr) return true;
+  const long parent = std::strtol(text, nullptr, 10);
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  // The sweep may have ended before the line above: then the parent is already another process.
+  return parent <= 0 || getppid() == static_cast<pid_t>(parent);
+}
 
 namespace {
 
@@ -106,9 +117,19 @@ void ProcessPool::start(std::size_t tag, const std::vector<std::string>& args,
   posix_spawnattr_setsigmask(&attributes, &none);
   posix_spawnattr_setflags(&attributes,
                            POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  // The case learns its sweep's process id: it stops (as on SIGTERM, with a checkpoint) when the
+  // sweep is gone, instead of running on orphaned and holding the sweep's cases.
+  std::vector<std::string> environment_text{std::string(kSweepParentVariable) + "=" + std::to_string(getpid())};
+  for (char** e = environ; *e != nullptr; ++e)
+    if (std::string_view(*e).substr(0, std::strlen(kSweepParentVariable) + 1) !=
+        std::string(kSweepParentVariable) + "=")
+      environment_text.emplace_back(*e);
+  std::vector<char*> environment;
+  for (std::string& e : environment_text) environment.push_back(e.data());
+  environment.push_back(nullptr);
   pid_t pid = 0;
   const int error =
-      posix_spawn(&pid, executable_.c_str(), &actions, &attributes, argv.data(), environ);
+      posix_spawn(&pid, executable_.c_str(), &actions, &attributes, argv.data(), environment.data());
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   if (error != 0)

@@ -18,6 +18,15 @@
 
 namespace carom {
 
+/// Environment variable through which a sweep's case learns the sweep's process id
+/// (follow_sweep_parent).
+inline constexpr const char* kSweepParentVariable = "CAROM_SWEEP_PARENT";
+
+/// In a case started by a sweep (kSweepParentVariable set): asks the kernel for SIGTERM when the
+/// sweep process ends (the case then checkpoints and exits 130, as on a Ctrl-C), and returns
+/// false when the sweep is already gone (the case must not start). True otherwise.
+bool follow_sweep_parent();
+
 /// How a child ended.
 struct ChildExit {
   std::size_t tag = 0;         ///< What the caller started it for (a case index).

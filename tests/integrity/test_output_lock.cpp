@@ -1,12 +1,15 @@
 // One run per output folder: while a run writes into a folder, a second `carom run`, a
 // `carom run --overwrite` and a `carom resume` into it are refused (exit 2, "in use") and delete
 // nothing; once the first process is gone (ended by a signal, or killed with SIGKILL, which
-// leaves the lock file behind) the lock is stale and the folder is usable at once.
+// leaves the lock file behind) the lock is stale and the folder is usable at once. A sweep's
+// case whose sweep is killed with SIGKILL stops (it is not left running orphaned), and the
+// sweep run again at once is not refused.
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "tests/integrity/integrity_support.hpp"
@@ -83,6 +86,49 @@ TEST_F(OutputLockTest, ALockLeftByAKilledProcessIsStale) {
   EXPECT_TRUE(fs::exists(dir_ / "killed" / ".carom.lock"));
   EXPECT_EQ(carom("run gas.toml --out killed --overwrite --quiet --set time.end=0.2"), 0) << out_;
   EXPECT_EQ(carom("resume killed --end 0.3 --quiet"), 0) << out_;
+}
+
+/// True while process `pid` runs (a zombie counts as gone).
+bool running(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+  const std::size_t close = text.rfind(')');
+  return close != std::string::npos && close + 2 < text.size() && text[close + 2] != 'Z';
+}
+
+TEST_F(OutputLockTest, ACaseOfAKilledSweepStopsAndTheSweepRunsAgain) {
+  scene("gas.toml", kGas);
+  std::ofstream(dir_ / "long.toml") << "[sweep]\nscene = \"gas.toml\"\nseeds = [1]\n[sweep.set]\ntime.end = 1e6\n"
+                                       "collisions.default = { e = 1.0, mu = 0.0, beta0 = -1.0 }\noutput.snapshot_every = 1e5\n"
+                                       "output.sample_every = 1e5\noutput.checkpoint_every = 1e5\n";
+  const pid_t sweep = start({"sweep", "long.toml", "--out", "swept", "--quiet"});
+  // The case's lock file names its process.
+  fs::path lock;
+  for (int k = 0; k < 300 && lock.empty(); ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::error_code error;
+    if (fs::exists(dir_ / "swept"))
+      for (const auto& entry : fs::recursive_directory_iterator(dir_ / "swept", error))
+        if (entry.path().filename() == ".carom.lock" && fs::file_size(entry.path(), error) > 0) lock = entry.path();
+  }
+  ASSERT_FALSE(lock.empty()) << read(dir_ / "background.log");
+  const pid_t case_pid = std::stoi(read(lock));
+  ASSERT_TRUE(running(case_pid));
+  kill(sweep, SIGKILL);
+  EXPECT_EQ(wait_exit(sweep), 128 + SIGKILL);
+  bool stopped = false;
+  for (int k = 0; k < 100 && !stopped; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    stopped = !running(case_pid);
+  }
+  EXPECT_TRUE(stopped) << "the case of a killed sweep runs on";
+  // The sweep again at once: not told that its folder is in use; it runs the case again.
+  const pid_t again = start({"sweep", "long.toml", "--out", "swept", "--quiet"});
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  EXPECT_TRUE(running(again)) << read(dir_ / "background.log");
+  kill(again, SIGTERM);
+  EXPECT_EQ(wait_exit(again), 130) << read(dir_ / "background.log");
+  EXPECT_EQ(read(dir_ / "background.log").find("in use"), std::string::npos) << read(dir_ / "background.log");
 }
 
 }  // namespace

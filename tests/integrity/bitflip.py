@@ -6,6 +6,9 @@ give the same final state as the undamaged resume (a bit that carries no informa
 a crash (a signal) or a silent change (exit 0, another final state) fails the campaign.
 
 Usage: bitflip.py CAROM [--flips N] [--seed S] [--methods m1,m2] [--work DIR]
+Methods: event_driven, soft_sphere, monte_carlo (a small gas of two species), and the shipped
+scenes made small: gas (fluidized_bed.toml, event-driven with its gas) and inflow
+(duct_flow.toml with its inflow and outflow, soft spheres).
 Prints one row per method: method, flips, refused, same, crashes, silent. Exit 0 when crashes
 and silent changes are both 0. Needs Debian's python3-h5py and python3-numpy.
 """
@@ -82,15 +85,33 @@ def resume(carom, folder, end):
     return result.returncode, result.stdout.decode(errors="replace")
 
 
+SCENES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios", "scenes")
+
+# The other cases: (scene, extra arguments of `carom run`, time to resume to).
+CASES = {
+    "gas": ("fluidized_bed.toml",
+            ["--set", "species.glass.fill.count=150", "--set", "domain.max=[0.008, 0.004, 0.03]",
+             "--set", "regions.bed.max=[0.008, 0.004, 0.015]", "--set", "gas.cells=[4, 1, 10]",
+             "--set", "initial.settle_time=0.05", "--set", "time.end=0.02"], 0.022),
+    "inflow": ("duct_flow.toml", ["--method", "soft_sphere", "--set", "time.end=0.05"], 0.052),
+}
+
+
 def campaign(carom, method, flips, rng, work):
-    scene = os.path.join(work, "gas.toml")
-    with open(scene, "w") as out:
-        out.write(GAS)
     base = os.path.join(work, method)
-    subprocess.run([carom, "run", scene, "--method", method, "--out", base, "--quiet"], check=True)
+    if method in CASES:
+        name, extra, end = CASES[method]
+        scene = os.path.join(SCENES, name)
+        subprocess.run([carom, "run", scene, "--out", base, "--quiet"] + extra, check=True)
+    else:
+        scene = os.path.join(work, "gas.toml")
+        with open(scene, "w") as out:
+            out.write(GAS)
+        subprocess.run([carom, "run", scene, "--method", method, "--out", base, "--quiet"], check=True)
+        end = 1.1
     reference = os.path.join(work, method + "_reference")
     shutil.copytree(base, reference)
-    code, text = resume(carom, reference, 1.1)
+    code, text = resume(carom, reference, end)
     if code != 0:
         raise SystemExit(f"{method}: the undamaged resume failed ({code}): {text}")
     expected = final_state(reference)
@@ -113,7 +134,7 @@ def campaign(carom, method, flips, rng, work):
             byte = f.read(1)[0]
             f.seek(offset + at)
             f.write(bytes([byte ^ (1 << bit)]))
-        code, text = resume(carom, damaged, 1.1)
+        code, text = resume(carom, damaged, end)
         where = f"{name} byte {at} bit {bit}"
         if code < 0 or code >= 128:
             counts["crashes"] += 1
@@ -133,7 +154,7 @@ def main():
     parser.add_argument("carom")
     parser.add_argument("--flips", type=int, default=200)
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--methods", default="event_driven,soft_sphere,monte_carlo")
+    parser.add_argument("--methods", default="event_driven,soft_sphere,monte_carlo,gas,inflow")
     parser.add_argument("--work", default=None, help="folder for the runs (default: a temporary one, removed)")
     args = parser.parse_args()
     rng = random.Random(args.seed)

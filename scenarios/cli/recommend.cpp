@@ -385,7 +385,7 @@ std::vector<Advice> recommend(const Scene& scene, const SceneNumbers& n) {
                     num(n.young_modulus) + " Pa of [[species]], read for soft spheres: a modulus "
                     "softened for a cheaper soft-sphere step lengthens the contacts, and with the "
                     "material's own modulus above " + num(binary_from) +
-                    " Pa they would be binary and exact events the method (without young_modulus "
+                    " Pa they would be binary and exact events would do (without young_modulus, "
                     "carom check does not judge contacts)";
   } else {
     method.reason =

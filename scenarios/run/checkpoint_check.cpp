@@ -120,7 +120,9 @@ void check_events(const std::string& file, const h5::Group& state, const std::st
 
 }  // namespace
 
-void check_checkpoint_state(const Checkpoint& checkpoint, const System& system) {
+/// The checks of check_checkpoint_state; an HDF5 error (a dataset or attribute missing, a wrong
+/// type) comes out as std::runtime_error, which check_checkpoint_state turns into a refusal.
+static void check_state(const Checkpoint& checkpoint, const System& system) {
   const h5::File& f = *checkpoint.file;
   const std::string& file = f.file_path();
   const h5::Group state = checkpoint.method_state();
@@ -188,6 +190,17 @@ void check_checkpoint_state(const Checkpoint& checkpoint, const System& system) 
   check_events(file, state, "crossings", n, system.walls.size(), clock);
 }
 
+void check_checkpoint_state(const Checkpoint& checkpoint, const System& system) {
+  try {
+    check_state(checkpoint, system);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {  // e.g. "checkpoint.h5:/state/particles: has no dataset 'mass'"
+    throw SceneError(std::string(e.what()) +
+                     ": the checkpoint is damaged or not carom's; resume from an intact copy or run the scene again");
+  }
+}
+
 void check_run_file_matches(const std::string& run_path, const Checkpoint& checkpoint) {
   RunInfo run;
   try {
@@ -222,7 +235,9 @@ void check_run_file_matches(const std::string& run_path, const Checkpoint& check
   if (run.run_id != saved.run_id || run.seed != saved.seed || run.method != saved.method ||
       (run.run_id == 0 && run.scene_name != saved.scene_name))
     throw SceneError(both + " belong to different runs (run id " + std::to_string(run.run_id) + " against " +
-                     std::to_string(saved.run_id) + ", scene '" + run.scene_name.substr(0, 64) + "' against '" +
+                     std::to_string(saved.run_id) + ", seed " + std::to_string(run.seed) + " against " +
+                     std::to_string(saved.seed) + ", method '" + run.method.substr(0, 64) + "' against '" +
+                     saved.method.substr(0, 64) + "', scene '" + run.scene_name.substr(0, 64) + "' against '" +
                      saved.scene_name.substr(0, 64) + "'); resume needs the run file and checkpoint of one run");
 }
 

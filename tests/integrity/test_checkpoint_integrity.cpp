@@ -3,6 +3,7 @@
 // - Value checks (the checksum rewritten after the damage, so that only they can catch it): a
 //   partner index >= N, a mass of 0 or -1, an inertia of NaN, a speed of 1e300 m/s, a NaN time
 //   in run.h5, for every method where the dataset exists.
+// - A dataset of the state missing (the checksum rewritten) refused, for every method.
 // - The checksum: a changed value with the old checksum, and a checkpoint without one, refused.
 // - Identity: run.h5, checkpoint.h5 and summary.json carry one run id; a checkpoint of another
 //   run in the folder is refused.
@@ -101,6 +102,21 @@ TEST_F(DamagedCheckpoint, ACheckpointWithoutChecksumIsRefused) {
     ASSERT_GE(H5Adelete(file.id(), carom::kChecksumAttribute), 0);
   }
   expect_refused("unsealed", "has no checksum");
+}
+
+// Found by tests/fuzz/fuzz_resume: a dataset of the state missing from a sealed checkpoint was
+// an HDF5 error (exit 1, "carom: failed"), not a refusal (exit 2).
+TEST_F(DamagedCheckpoint, AMissingStateDatasetIsRefused) {
+  for (const std::string& method : kMethods) {
+    run_gas(method, "run_" + method);
+    const std::string ckpt = copy_of("run_" + method, "no_mass_" + method);
+    {
+      const carom::h5::File file = carom::h5::File::open(ckpt, true);
+      file.open_group("state/particles").remove("mass");
+      carom::seal_file(file);
+    }
+    expect_refused("no_mass_" + method, "/state/particles: has no dataset 'mass'");
+  }
 }
 
 TEST_F(DamagedCheckpoint, ADamagedRunFileTimeIsRefused) {

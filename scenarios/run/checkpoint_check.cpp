@@ -162,6 +162,19 @@ static void check_state(const Checkpoint& checkpoint, const System& system) {
       refuse(file, c.path("spin"), "particle " + std::to_string(i) + "'s surface moves at " + number(norm3(spin, i) * radius[i]) +
                                        " m/s, above the bound " + number(kMaxSpeed) + " m/s");
   }
+  // Soft spheres: each particle's drag flight (rate 1/tau, 1/s). Without a gas there is no drag
+  // (the flights are gravity alone, rate 0); with one a rate is finite and >= 0 (the engine
+  // checks it against its step at each fluid step). A wild rate would make the velocities
+  // explode within a step of the resumed run.
+  if (particles.contains("flight_rate")) {
+    const std::vector<double> rate = doubles(particles, "flight_rate");
+    if (rate.size() != n) refuse(file, c.path("flight_rate"), "does not hold one value per particle");
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(std::isfinite(rate[i]) && rate[i] >= 0 && (rate[i] == 0 || checkpoint.has_gas())))
+        refuse(file, c.path("flight_rate"), "particle " + std::to_string(i) + "'s drag rate is " + number(rate[i]) +
+                                                " 1/s, not " + (checkpoint.has_gas() ? "a finite rate >= 0" : "0 (the run has no gas)"));
+  }
+  if (particles.contains("flight_drive")) c.vectors("flight_drive");
   std::vector<double> clock;
   if (particles.contains("clock")) {
     clock = doubles(particles, "clock");

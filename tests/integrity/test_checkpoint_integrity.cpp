@@ -3,7 +3,8 @@
 // - Value checks (the checksum rewritten after the damage, so that only they can catch it): a
 //   partner index >= N, a mass of 0 or -1, an inertia of NaN, a speed of 1e300 m/s, a NaN time
 //   in run.h5, for every method where the dataset exists.
-// - A dataset of the state missing (the checksum rewritten) refused, for every method.
+// - A dataset of the state missing (the checksum rewritten) refused, for every method; a soft-
+//   sphere drag rate other than 0 in a run without gas refused.
 // - The checksum: a changed value with the old checksum, and a checkpoint without one, refused.
 // - Identity: run.h5, checkpoint.h5 and summary.json carry one run id; a checkpoint of another
 //   run in the folder is refused.
@@ -116,6 +117,18 @@ TEST_F(DamagedCheckpoint, AMissingStateDatasetIsRefused) {
       carom::seal_file(file);
     }
     expect_refused("no_mass_" + method, "/state/particles: has no dataset 'mass'");
+  }
+}
+
+// Found by tests/fuzz/fuzz_resume: a soft-sphere drag rate of 1.6e69 1/s in a run without gas
+// made the velocities explode in the first steps and the neighbour grid cast a position of
+// 7.8e37 m to a cell index (undefined behaviour).
+TEST_F(DamagedCheckpoint, ASoftSphereDragRateWithoutGasIsRefused) {
+  run_gas("soft_sphere", "run");
+  for (const double rate : {1.6e69, -1.0}) {
+    const std::string name = rate > 0 ? "huge_rate" : "negative_rate";
+    damage<double>(copy_of("run", name), "/state/particles/flight_rate", 3, rate);
+    expect_refused(name, "/state/particles/flight_rate");
   }
 }
 

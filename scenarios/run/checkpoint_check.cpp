@@ -118,6 +118,29 @@ void check_events(const std::string& file, const h5::Group& state, const std::st
   }
 }
 
+/// The inflow counters of /flow: every particle that entered took an id below next_id, so the
+/// inflows' entered counts add up to at most next_id; the particles owed (due - entered, >= 0 by
+/// construction) are finite and below 2^53. A count or debt out of range would give the next
+/// flow step a negative or absurd number of particles to place.
+void check_flow(const std::string& file, const h5::Group& flow) {
+  if (!flow.contains("inflow_entered")) return;
+  const std::uint64_t next_id = flow.has_attribute("next_id") ? flow.attribute<std::uint64_t>("next_id") : 0;
+  const std::vector<std::uint64_t> entered = flow.read<std::uint64_t>("inflow_entered");
+  std::uint64_t total = 0;
+  for (const std::uint64_t count : entered) {
+    total += count;
+    if (count > next_id || total > next_id)
+      refuse(file, "/flow/inflow_entered", "the inflows entered " + std::to_string(total) +
+                                               " particles or more, beyond the next particle id " + std::to_string(next_id));
+  }
+  if (!flow.contains("inflow_owed")) return;
+  const std::vector<double> owed = doubles(flow, "inflow_owed");
+  for (std::size_t k = 0; k < owed.size(); ++k)
+    if (!(std::isfinite(owed[k]) && owed[k] >= 0 && owed[k] < 9007199254740992.0))
+      refuse(file, "/flow/inflow_owed", "inflow " + std::to_string(k) + " owes " + number(owed[k]) +
+                                            " particles, not a count in [0, 2^53)");
+}
+
 }  // namespace
 
 /// The checks of check_checkpoint_state; an HDF5 error (a dataset or attribute missing, a wrong
@@ -201,6 +224,7 @@ static void check_state(const Checkpoint& checkpoint, const System& system) {
   }
   check_events(file, state, "events", n, system.walls.size(), clock);
   check_events(file, state, "crossings", n, system.walls.size(), clock);
+  if (f.contains("flow")) check_flow(file, f.open_group("flow"));
 }
 
 void check_checkpoint_state(const Checkpoint& checkpoint, const System& system) {

@@ -132,6 +132,17 @@ TEST_F(DamagedCheckpoint, ASoftSphereDragRateWithoutGasIsRefused) {
   }
 }
 
+// Found by tests/fuzz/fuzz_resume: an inflow's entered count beyond every particle id made the
+// next flow step owe a negative number of particles (cast to unsigned: undefined behaviour).
+TEST_F(DamagedCheckpoint, AnInflowCountOutOfRangeIsRefused) {
+  ASSERT_EQ(carom("run " + kScenes + "/duct_flow.toml --method soft_sphere --set time.end=0.05 --out duct --quiet"), 0)
+      << out_;
+  damage<std::uint64_t>(copy_of("duct", "entered"), "/flow/inflow_entered", 0, std::uint64_t{1} << 62);
+  expect_refused("entered", "/flow/inflow_entered");
+  damage<double>(copy_of("duct", "owed"), "/flow/inflow_owed", 0, 1e30);
+  expect_refused("owed", "/flow/inflow_owed");
+}
+
 TEST_F(DamagedCheckpoint, ADamagedRunFileTimeIsRefused) {
   run_gas("event_driven", "run");
   copy_of("run", "bad_times");

@@ -48,21 +48,6 @@ herr_t collect_object(hid_t group, const char* name, const H5L_info_t*, void* da
   return 0;
 }
 
-SeedFile load_seed(const fs::path& path) {
-  SeedFile seed;
-  const std::string bytes = read_text(path);
-  seed.bytes.assign(bytes.begin(), bytes.end());
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) {
-    std::fprintf(stderr, "carom fuzz: cannot open the seed %s\n", path.c_str());
-    std::abort();
-  }
-  collect_attributes(file, "/", seed);
-  H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, collect_object, &seed);
-  H5Fclose(file);
-  return seed;
-}
-
 InitialFileSeeds make_seeds() {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // damaged files: HDF5's errors are expected
   InitialFileSeeds seeds;
@@ -86,8 +71,8 @@ InitialFileSeeds make_seeds() {
     std::fprintf(stderr, "carom fuzz: the seed run of %s failed\n", scene_path.c_str());
     std::abort();
   }
-  seeds.run = load_seed(fs::path(options.out_dir) / "run.h5");
-  seeds.checkpoint = load_seed(fs::path(options.out_dir) / "checkpoint.h5");
+  seeds.run = load_seed_file((fs::path(options.out_dir) / "run.h5").string());
+  seeds.checkpoint = load_seed_file((fs::path(options.out_dir) / "checkpoint.h5").string());
   return seeds;
 }
 
@@ -117,6 +102,21 @@ end = 0.02
 )";
 
 }  // namespace
+
+SeedFile load_seed_file(const std::string& path) {
+  SeedFile seed;
+  const std::string bytes = read_text(fs::path(path));
+  seed.bytes.assign(bytes.begin(), bytes.end());
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    std::fprintf(stderr, "carom fuzz: cannot open the seed %s\n", path.c_str());
+    std::abort();
+  }
+  collect_attributes(file, "/", seed);
+  H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, collect_object, &seed);
+  H5Fclose(file);
+  return seed;
+}
 
 const InitialFileSeeds& initial_file_seeds() {
   static const InitialFileSeeds seeds = make_seeds();

@@ -20,6 +20,10 @@ struct SeedFile {
   std::vector<AttributeName> attributes;  ///< Every attribute (of the root, groups, datasets).
 };
 
+/// Reads a valid carom file: its bytes and every dataset and attribute it holds (aborts when it
+/// cannot be opened).
+SeedFile load_seed_file(const std::string& path);
+
 /// The run file and checkpoint of tests/fuzz/tiny_run.toml, and this process's scratch folder.
 struct InitialFileSeeds {
   std::string work_dir;  ///< A fresh folder under the temp dir, removed at exit.

@@ -3,8 +3,8 @@
 
   make_corpus.py OUT   writes OUT/fuzz_scene/ (every shipped scene, the test scenes of
   tests/data, tiny_run.toml), OUT/fuzz_overrides/ (one `--set` per key of every shipped scene,
-  on that scene; fuzz_overrides.cpp's input format), OUT/fuzz_initial_file/ (a few edit lists)
-  and OUT/scene.dict (every key and section name, for libFuzzer's -dict).
+  on that scene; fuzz_overrides.cpp's input format), OUT/fuzz_initial_file/ and OUT/fuzz_resume/
+  (a few edit lists) and OUT/scene.dict (every key and section name, for libFuzzer's -dict).
 """
 import hashlib
 import os
@@ -82,6 +82,10 @@ def main(out):
     rng = random.Random(1)
     for n in (0, 1, 2, 8, 32, 128):
         write(os.path.join(out, "fuzz_initial_file"), bytes(rng.randrange(256) for _ in range(n)) + bytes([n]))
+    # fuzz_resume: edit lists too (the harness makes its seed runs itself); the short ones pick
+    # a seed run and a resume length with few or no edits, the long ones edit both files.
+    for n in (0, 1, 2, 3, 4, 8, 16, 32, 64, 128, 200):
+        write(os.path.join(out, "fuzz_resume"), bytes(rng.randrange(256) for _ in range(n)) + bytes([n]))
     with open(os.path.join(out, "scene.dict"), "w") as f:
         for k in sorted(keys):
             f.write(f'"{k}"\n')

@@ -4,7 +4,8 @@
 # -timeout), memory blow-up (-rss_limit_mb) or a bad input answered with anything but a
 # SceneError; the input that did it is kept in $WORK/artifacts/.
 #
-#   tests/fuzz/run.sh SECONDS [HARNESS ...]    (default: fuzz_scene fuzz_overrides fuzz_initial_file)
+#   tests/fuzz/run.sh SECONDS [HARNESS ...]
+#   (default: fuzz_scene fuzz_overrides fuzz_initial_file fuzz_resume)
 #
 # Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz.
 # Environment: FUZZ_BUILD (default build/fuzz), WORK (default FUZZ_BUILD/fuzz-work: the corpora
@@ -14,11 +15,13 @@ root="$(cd "$(dirname "$0")/../.." && pwd)"
 seconds="${1:?usage: run.sh SECONDS [HARNESS ...]}"
 shift
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(fuzz_scene fuzz_overrides fuzz_initial_file)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(fuzz_scene fuzz_overrides fuzz_initial_file fuzz_resume)
 build="${FUZZ_BUILD:-$root/build/fuzz}"
 work="${WORK:-$build/fuzz-work}"
 jobs="${JOBS:-1}"
 mkdir -p "$work/artifacts"
+# Seeds: scenes, --set lines, and edit lists for fuzz_initial_file and fuzz_resume (those two make
+# the files they edit themselves: runs of tiny_run.toml and of the resume_*.toml scenes).
 python3 "$root/tests/fuzz/make_corpus.py" "$work/seeds" || exit 1
 # The raw-bytes harness starts from real files: the run file and checkpoint of tiny_run.toml.
 if [[ " ${harnesses[*]} " == *" fuzz_initial_file_bytes "* ]]; then

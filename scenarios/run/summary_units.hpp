@@ -34,7 +34,7 @@ inline constexpr SummaryKey kSummaryKeys[] = {
     {"run.scene_hash", "text", "hash of the scene as run, 16 hex digits"},
     {"run.seed", "1", "the random seed"},
     {"run.method", "text", "collision method: event_driven, soft_sphere or monte_carlo"},
-    {"status", "text", "completed, interrupted, inelastic_collapse or failed"},
+    {"status", "text", "how the run ended: completed, interrupted, a detector's name, stalled or failed (SUMMARY.md lists them)"},
     {"message", "text", "why the run stopped, when not completed"},
     {"start_time", "s", "simulated time at which this stretch began (0, or the checkpoint's)"},
     {"end_time", "s", "simulated time at which it ended"},

@@ -20,9 +20,10 @@ TEST(ProgressLog, WholeLinesAtTheIntervalWhenStderrIsNotATerminal) {
   ASSERT_FALSE(ProgressLine::stderr_is_terminal()) << "run this test with stderr redirected (ctest does)";
   testing::internal::CaptureStderr();
   {
-    ProgressLine progress(true, 0.0, 2.0, 0.05);
+    // An interval of 1 s: wide enough that a busy machine does not reach it between two calls.
+    ProgressLine progress(true, 0.0, 2.0, 1.0);
     progress.update(0.1, 100, 50);  // before the first interval: nothing
-    std::this_thread::sleep_for(std::chrono::milliseconds(80));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
     progress.update(0.5, 1100, 550);
     progress.update(0.6, 1200, 600);  // within the interval after it: nothing
     progress.finish();

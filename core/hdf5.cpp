@@ -411,16 +411,22 @@ File File::create(const std::string& path) {
   return File(std::move(file), path);
 }
 
-File File::open(const std::string& path, bool writable) {
-  silence_hdf5();
-  Handle file(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT),
-              H5Fclose);
+namespace {
+/// H5Fopen with `flags` and the file-access list `access`, or an error naming the file.
+Handle open_file(const std::string& path, unsigned flags, hid_t access) {
+  Handle file(H5Fopen(path.c_str(), flags, access), H5Fclose);
   if (!file.valid()) {
     const std::string detail = hdf5_error();
     throw std::runtime_error(path + ": cannot open as an HDF5 file" +
                              (detail.empty() ? "" : " (HDF5: " + detail + ")"));
   }
-  return File(std::move(file), path);
+  return file;
+}
+}  // namespace
+
+File File::open(const std::string& path, bool writable) {
+  silence_hdf5();
+  return File(open_file(path, writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), path);
 }
 
 File File::open_unlocked(const std::string& path) {
@@ -428,13 +434,7 @@ File File::open_unlocked(const std::string& path) {
   Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   if (!access.valid() || H5Pset_file_locking(access.get(), false, true) < 0)
     throw std::runtime_error(path + ": cannot set up an unlocked read (HDF5: " + hdf5_error() + ")");
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
-  if (!file.valid()) {
-    const std::string detail = hdf5_error();
-    throw std::runtime_error(path + ": cannot open as an HDF5 file" +
-                             (detail.empty() ? "" : " (HDF5: " + detail + ")"));
-  }
-  return File(std::move(file), path);
+  return File(open_file(path, H5F_ACC_RDONLY, access.get()), path);
 }
 
 void File::flush() const {

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/hdf5.hpp"
+
 namespace carom {
 
 namespace {
@@ -138,18 +140,14 @@ herr_t visit(hid_t root, const char* name, const H5O_info_t* info, void* data) {
 void print_file_tree(const std::string& path, std::ostream& out) {
   require_hdf5_file(path);
   // Unlocked, as carom info: a run still being written is read as of its last flush.
-  const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
-  H5Pset_file_locking(access, false, true);
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, access);
-  H5Pclose(access);
-  if (file < 0) throw std::runtime_error(path + ": cannot open the HDF5 file");
+  const h5::File opened = h5::File::open_unlocked(path);
+  const hid_t file = opened.id();
   WalkState state;
   state.out = &out;
   out << path << " (" << std::filesystem::file_size(path) << " bytes)\n";
   hsize_t index = 0;
   H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &index, print_attribute, &state);
   const herr_t status = H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, visit, &state, H5O_INFO_BASIC);
-  H5Fclose(file);
   if (status < 0) throw std::runtime_error(path + ": cannot read the file's structure");
   if (state.snapshots > 1)
     out << "  (" << state.snapshots - 1 << " more snapshots like /snapshots/" << state.first_snapshot << ")\n";

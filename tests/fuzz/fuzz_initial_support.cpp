@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "scenarios/run/output_estimate.hpp"
 #include "scenarios/run/run.hpp"
@@ -16,6 +17,22 @@
 namespace carom::fuzz {
 
 namespace fs = std::filesystem;
+
+std::string make_work_dir(const std::string& prefix) {
+  std::string folder = (fs::temp_directory_path() / (prefix + "_XXXXXX")).string();
+  if (mkdtemp(folder.data()) == nullptr) {
+    std::perror("carom fuzz: mkdtemp");
+    std::abort();
+  }
+  static std::vector<std::string> remove_at_exit;
+  if (remove_at_exit.empty())
+    std::atexit([] {
+      std::error_code error;
+      for (const std::string& f : remove_at_exit) fs::remove_all(f, error);
+    });
+  remove_at_exit.push_back(folder);
+  return folder;
+}
 
 namespace {
 
@@ -51,18 +68,8 @@ herr_t collect_object(hid_t group, const char* name, const H5L_info_t*, void* da
 InitialFileSeeds make_seeds() {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // damaged files: HDF5's errors are expected
   InitialFileSeeds seeds;
-  std::string folder = (fs::temp_directory_path() / "carom_fuzz_XXXXXX").string();
-  if (mkdtemp(folder.data()) == nullptr) {
-    std::perror("carom fuzz: mkdtemp");
-    std::abort();
-  }
+  const std::string folder = make_work_dir("carom_fuzz");
   seeds.work_dir = folder;
-  static std::string remove_at_exit;
-  remove_at_exit = folder;
-  std::atexit([] {
-    std::error_code error;
-    fs::remove_all(remove_at_exit, error);
-  });
   const fs::path scene_path = fs::path(CAROM_FUZZ_DIR) / "tiny_run.toml";
   RunOptions options;
   options.out_dir = (fs::path(folder) / "seed_run").string();

@@ -31,6 +31,10 @@ struct InitialFileSeeds {
   SeedFile checkpoint;   ///< checkpoint.h5.
 };
 
+/// A new scratch folder under the system's temporary folder, named `prefix` and a random
+/// suffix, removed when the process exits.
+std::string make_work_dir(const std::string& prefix);
+
 /// Runs tiny_run.toml into a scratch folder once (first call) and returns its files.
 const InitialFileSeeds& initial_file_seeds();
 

@@ -109,18 +109,8 @@ Seeds make_seeds() {
   setenv("CAROM_THREADS", "1", 1);
   setenv("CAROM_STALL_WINDOW_SECONDS", "1", 1);
   Seeds seeds;
-  std::string folder = (fs::temp_directory_path() / "carom_fuzz_resume_XXXXXX").string();
-  if (mkdtemp(folder.data()) == nullptr) {
-    std::perror("carom fuzz: mkdtemp");
-    std::abort();
-  }
+  const std::string folder = carom::fuzz::make_work_dir("carom_fuzz_resume");
   seeds.work_dir = folder;
-  static std::string remove_at_exit;
-  remove_at_exit = folder;
-  std::atexit([] {
-    std::error_code error;
-    fs::remove_all(remove_at_exit, error);
-  });
   const struct {
     const char* name;
     const char* scene;

@@ -36,7 +36,8 @@ void ProgressLine::update(double time, std::uint64_t events, std::uint64_t colli
   const double since_draw = std::chrono::duration<double>(now - last_draw_).count();
   // The first log line comes after one interval too: a short run writes none.
   if (terminal_ ? has_last_ && since_draw < 0.25 : since_draw < log_interval_) return;
-  if (has_last_ && since_draw > 0) {
+  // Rates since the last line; a log's first line counts from this run's (or resume's) first chunk.
+  if ((has_last_ || !terminal_) && since_draw > 0) {
     events_rate_ = static_cast<double>(events - last_events_) / since_draw;
     collisions_rate_ = static_cast<double>(collisions - last_collisions_) / since_draw;
   }
@@ -44,9 +45,6 @@ void ProgressLine::update(double time, std::uint64_t events, std::uint64_t colli
   const double done = (time - start_time_) / (end_time_ - start_time_);
   const double eta = done > 0 ? elapsed * (1.0 - done) / done : NAN;
   if (!terminal_) {
-    // Since the last line (the first: since the start of this run or resume).
-    events_rate_ = static_cast<double>(events - last_events_) / since_draw;
-    collisions_rate_ = static_cast<double>(collisions - last_collisions_) / since_draw;
     std::fprintf(stderr, "carom: t = %.4g / %.4g s (%.1f%%), %.3g events/s, %.3g collisions/s, %s of wall time, "
                  "about %s to go\n", time, end_time_, 100.0 * done, events_rate_, collisions_rate_,
                  duration_text(elapsed).c_str(), duration_text(eta).c_str());

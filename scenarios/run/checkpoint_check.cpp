@@ -162,6 +162,23 @@ static void check_state(const Checkpoint& checkpoint, const System& system) {
   ParticleChecks c{file, particles, "/state/particles", static_cast<std::size_t>(shape[0])};
   const std::size_t n = c.n;
   const std::vector<double> radius = c.positive("radius");
+  // Each particle's radius is its species' (as [initial] from_file requires): a wild radius would
+  // pass the box test below with a margin as wild, and reach the grids' cell indices.
+  if (particles.contains("species")) {
+    const std::vector<std::int64_t> species = particles.read<std::int64_t>("species");
+    if (species.size() != n) refuse(file, c.path("species"), "does not hold one value per particle");
+    for (std::size_t i = 0; i < n; ++i) {
+      if (species[i] < 0 || static_cast<std::size_t>(species[i]) >= system.species.size())
+        refuse(file, c.path("species"), "particle " + std::to_string(i) + " has species index " + std::to_string(species[i]) +
+                                            ", the scene has " + std::to_string(system.species.size()) + " species");
+      const double expected = system.species[static_cast<std::size_t>(species[i])].radius();
+      if (radius[i] != expected)
+        refuse(file, c.path("radius"), "particle " + std::to_string(i) + " has radius " + number(radius[i]) + " m, its species' is " +
+                                           number(expected) + " m");
+    }
+  } else {
+    refuse(file, c.path("species"), "is missing");
+  }
   c.positive("mass");
   c.positive("inertia");
   const std::vector<double> position = c.vectors("position");
@@ -207,14 +224,6 @@ static void check_state(const Checkpoint& checkpoint, const System& system) {
         refuse(file, c.path("clock"), "particle " + std::to_string(i) + "'s clock is " + number(clock[i]) +
                                           " s, not a finite time at or before the state's time " + number(now) + " s");
   }
-  if (particles.contains("species")) {
-    const std::vector<std::int64_t> species = particles.read<std::int64_t>("species");
-    if (species.size() != n) refuse(file, c.path("species"), "does not hold one value per particle");
-    for (std::size_t i = 0; i < n; ++i)
-      if (species[i] < 0 || static_cast<std::size_t>(species[i]) >= system.species.size())
-        refuse(file, c.path("species"), "particle " + std::to_string(i) + " has species index " + std::to_string(species[i]) +
-                                            ", the scene has " + std::to_string(system.species.size()) + " species");
-  }
   if (particles.contains("id")) {
     const std::vector<std::uint64_t> id = particles.read<std::uint64_t>("id");
     if (id.size() != n) refuse(file, c.path("id"), "does not hold one value per particle");
@@ -235,6 +244,17 @@ void check_checkpoint_state(const Checkpoint& checkpoint, const System& system) 
   } catch (const std::exception& e) {  // e.g. "checkpoint.h5:/state/particles: has no dataset 'mass'"
     throw SceneError(std::string(e.what()) +
                      ": the checkpoint is damaged or not carom's; resume from an intact copy or run the scene again");
+  }
+}
+
+void check_restored_state(const CollisionMethod& sim, MethodKind kind, const std::string& checkpoint_path) {
+  if (kind != MethodKind::EventDriven) return;  // soft spheres overlap by design; Monte Carlo partners are fictitious
+  System now = sim.system();
+  for (std::size_t i = 0; i < now.particles.size(); ++i) now.particles.position[i] = sim.position(i);
+  try {
+    validate_initial_state(now, kContactTolerance);
+  } catch (const std::invalid_argument& e) {
+    refuse(checkpoint_path, "/state/particles/position", std::string("at t = ") + number(sim.time()) + " s: " + e.what());
   }
 }
 

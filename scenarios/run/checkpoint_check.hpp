@@ -8,6 +8,8 @@
 #include <string>
 
 #include "core/system.hpp"
+#include "events/method.hpp"
+#include "events/method_factory.hpp"
 #include "scenarios/run/run_output.hpp"
 #include "scenarios/scene/state_bounds.hpp"
 
@@ -22,6 +24,12 @@ namespace carom {
 /// of its kind (particle, wall, face), its time not NaN and not before the particle's clock; no
 /// floating-point value anywhere in /state, /gas or /flow NaN. Throws SceneError.
 void check_checkpoint_state(const Checkpoint& checkpoint, const System& system);
+
+/// Checks the state a method was rebuilt into from the checkpoint at `checkpoint_path`, at its
+/// current time: for hard spheres (the event-driven method), no two particles overlap and none
+/// pokes through a wall beyond kContactTolerance (the engine's own invariant, which the
+/// per-value checks above cannot see). Throws SceneError.
+void check_restored_state(const CollisionMethod& sim, MethodKind kind, const std::string& checkpoint_path);
 
 /// Checks that the run file at `run_path` belongs to the run of `checkpoint` (same run id, seed
 /// and method) and that its time series and snapshot times are finite and ordered. Throws

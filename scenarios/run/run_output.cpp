@@ -303,14 +303,22 @@ void RunFile::Impl::recover_previous_sample() {
   const std::vector<double> times = series.read<double>("time");
   if (times.empty()) return;
   const std::size_t last = times.size() - 1;
-  auto last_row = [&](const std::vector<double>& values) {
-    return std::vector<double>(values.end() - 9, values.end());
+  // Row `last` of a column of `width` values per row. A column may hold more rows than the time
+  // (a run stopped while its columns were being appended: the resume truncates them), not fewer.
+  auto row = [&]<class T>(const std::string& name, std::size_t width, T) {
+    const std::vector<T> values = series.read<T>(name);
+    if (values.size() < width * times.size())
+      throw std::runtime_error(path + ": /timeseries/" + name + " holds " + std::to_string(values.size()) +
+                               " values for " + std::to_string(times.size()) + " rows of " + std::to_string(width) +
+                               ": the run file is damaged");
+    return std::vector<T>(values.begin() + static_cast<std::ptrdiff_t>(width * last),
+                          values.begin() + static_cast<std::ptrdiff_t>(width * (last + 1)));
   };
   previous_time = times[last];
-  previous_events = series.read<std::uint64_t>("events")[last];
-  previous_collisions = series.read<std::uint64_t>("collisions")[last];
-  previous_virial = from_row_major(last_row(series.read<double>("virial")));
-  previous_kinetic_stress = from_row_major(last_row(series.read<double>("kinetic_stress")));
+  previous_events = row("events", 1, std::uint64_t{})[0];
+  previous_collisions = row("collisions", 1, std::uint64_t{})[0];
+  previous_virial = from_row_major(row("virial", 9, 0.0));
+  previous_kinetic_stress = from_row_major(row("kinetic_stress", 9, 0.0));
   has_previous = true;
 }
 

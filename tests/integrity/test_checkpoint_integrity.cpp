@@ -1,8 +1,9 @@
 // Checkpoints carry their own proof: a damaged value is refused by `carom resume` with exit 2 and
 // a message naming the dataset, never a crash and never a completed run from a damaged state.
 // - Value checks (the checksum rewritten after the damage, so that only they can catch it): a
-//   partner index >= N, a mass of 0 or -1, an inertia of NaN, a speed of 1e300 m/s, a NaN time
-//   in run.h5, for every method where the dataset exists.
+//   partner index >= N, a mass of 0 or -1, a radius of 1e84, an inertia of NaN, a speed of
+//   1e300 m/s, a NaN time in run.h5, for every method where the dataset exists.
+// - Hard spheres overlapping in the restored state refused.
 // - A dataset of the state missing (the checksum rewritten) refused, for every method; a soft-
 //   sphere drag rate other than 0 in a run without gas refused.
 // - The checksum: a changed value with the old checksum, and a checkpoint without one, refused.
@@ -62,6 +63,10 @@ TEST_F(DamagedCheckpoint, EachDamagedValueIsRefusedForEveryMethod) {
     expect_refused(method + "_speed", "/state/particles/velocity");
     damage<double>(copy_of(method, method + "_radius"), "/state/particles/radius", 2, -0.5);
     expect_refused(method + "_radius", "/state/particles/radius");
+    // A finite, positive but wild radius (fuzz_resume found 1e84 reaching the gas grid's cell
+    // index as an int): refused as not the species' radius.
+    damage<double>(copy_of(method, method + "_huge_radius"), "/state/particles/radius", 2, 1e84);
+    expect_refused(method + "_huge_radius", "/state/particles/radius");
     damage<double>(copy_of(method, method + "_place"), "/state/particles/position", 0, 1e9);
     expect_refused(method + "_place", "/state/particles/position");
     if (events) {
@@ -123,6 +128,30 @@ TEST_F(DamagedCheckpoint, AMissingStateDatasetIsRefused) {
 // Found by tests/fuzz/fuzz_resume: a soft-sphere drag rate of 1.6e69 1/s in a run without gas
 // made the velocities explode in the first steps and the neighbour grid cast a position of
 // 7.8e37 m to a cell index (undefined behaviour).
+// Hard spheres that overlap where the checkpoint puts them (each value finite and in the box, so
+// only the restored state shows it): particle 1 given particle 0's position, velocity and clock,
+// so that both are at one place at the state's time. Refused, naming the positions, instead of
+// a run whose engine resolves collisions of an overlapping pair.
+TEST_F(DamagedCheckpoint, OverlappingHardSpheresAreRefused) {
+  run_gas("event_driven", "overlap_run");
+  const std::string ckpt = copy_of("overlap_run", "overlap");
+  std::vector<double> position, velocity, clock;
+  {
+    const carom::h5::File file = carom::h5::File::open(ckpt, false);
+    const carom::h5::Group particles = file.open_group("state/particles");
+    position = particles.read<double>("position");
+    velocity = particles.read<double>("velocity");
+    clock = particles.read<double>("clock");
+  }
+  for (std::size_t a = 0; a < 3; ++a) {
+    damage<double>(ckpt, "/state/particles/position", 3 + a, position[a]);
+    damage<double>(ckpt, "/state/particles/velocity", 3 + a, velocity[a]);
+  }
+  damage<double>(ckpt, "/state/particles/clock", 1, clock[0]);
+  expect_refused("overlap", "/state/particles/position");
+  EXPECT_NE(out_.find("overlaps"), std::string::npos) << out_;
+}
+
 TEST_F(DamagedCheckpoint, ASoftSphereDragRateWithoutGasIsRefused) {
   run_gas("soft_sphere", "run");
   for (const double rate : {1.6e69, -1.0}) {

@@ -273,7 +273,9 @@ std::string wrap_lines(const std::string& text, std::size_t width) {
   return wrapped;
 }
 
-void check_scene(Scene scene, bool settle, std::ostream& out) {
+void check_scene(Scene scene, bool settle, std::ostream& out) { out << check_report(std::move(scene), settle).text; }
+
+CheckReport check_report(Scene scene, bool settle) {
   const bool settling_skipped = !settle && scene.settle_time > 0;
   if (settling_skipped) scene.settle_time = 0;
   install_stop_handlers();
@@ -284,15 +286,18 @@ void check_scene(Scene scene, bool settle, std::ostream& out) {
   } catch (const std::invalid_argument& e) {
     throw SceneError(scene.file + ": " + e.what());
   }
+  CheckReport report;
   std::string text = describe_scene(scene);
   if (settling_skipped)
     text += "\nsettling: initial.settle_time is not run by carom check (carom check --settle runs it); "
             "the particles above are as placed, and the estimates below take them as a bed settled "
             "to a random packing of solid fraction " +
             display_number(kSettledPacking) + "\n";
-  const SceneNumbers numbers = scene_numbers(scene, settling_skipped);
-  text += describe_recommendation(numbers, recommend(scene, numbers));
-  out << wrap_lines(text);
+  report.numbers = scene_numbers(scene, settling_skipped);
+  report.advice = recommend(scene, report.numbers);
+  text += describe_recommendation(report.numbers, report.advice);
+  report.text = wrap_lines(text);
+  return report;
 }
 
 }  // namespace carom

@@ -3,7 +3,9 @@
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <vector>
 
+#include "scenarios/cli/recommend.hpp"
 #include "scenarios/scene/scene.hpp"
 
 namespace carom {
@@ -28,5 +30,15 @@ std::string wrap_lines(const std::string& text, std::size_t width = kCheckWidth)
 /// bed as settled to a random packing (recommend.hpp, kSettledPacking), which keeps the check
 /// to about a second where settling takes as long as that much simulation.
 void check_scene(Scene scene, bool settle, std::ostream& out);
+
+/// What `carom check` finds, as data (for the Python module's Scene.check).
+struct CheckReport {
+  std::string text;            ///< What check_scene writes, lines wrapped.
+  SceneNumbers numbers;        ///< The estimates of the "least model" section.
+  std::vector<Advice> advice;  ///< Its recommendations, the method first.
+};
+
+/// The work of check_scene, returned instead of written. Throws as check_scene does.
+CheckReport check_report(Scene scene, bool settle);
 
 }  // namespace carom

@@ -398,6 +398,61 @@ void install_stop_handlers() {
 
 const volatile std::sig_atomic_t* stop_flag() { return &g_stop; }
 
+void clear_stop_request() { g_stop = 0; }
+
+StartedRun::StartedRun() = default;
+StartedRun::StartedRun(StartedRun&&) noexcept = default;
+StartedRun& StartedRun::operator=(StartedRun&&) noexcept = default;
+StartedRun::~StartedRun() = default;
+
+StartedRun start_run(const Scene& scene) {
+  StartedRun started;
+  try {
+    started.method = make_method(scene.system, scene.method);
+    started.method->tag_bodies(scene.analysis.tagged_bodies);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": " + e.what());
+  }
+  try {
+    started.flow = attach_flow(*started.method, scene);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": [[inflow]]/[[outflow]]: " + e.what());
+  }
+  try {
+    started.gas = attach_gas(*started.method, scene);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.file + ": [gas]: " + e.what());
+  }
+  return started;
+}
+
+StartedRun restore_run(const Scene& scene, const Checkpoint& checkpoint, const std::string& path) {
+  StartedRun restored;
+  try {
+    restored.method = restore_method(scene.system, scene.method, checkpoint.method_state());
+    restored.method->tag_bodies(scene.analysis.tagged_bodies);
+  } catch (const std::exception& e) {
+    throw SceneError(path + ": cannot continue from this checkpoint: " + e.what());
+  }
+  try {
+    std::optional<h5::Group> saved_flow;
+    if (checkpoint.has_flow()) saved_flow = checkpoint.flow_state();
+    if (scene.flow.any() && !saved_flow)
+      throw std::runtime_error("the scene has inflows or outflows but the checkpoint holds no /flow state");
+    restored.flow = attach_flow(*restored.method, scene, saved_flow ? &*saved_flow : nullptr);
+  } catch (const std::exception& e) {
+    throw SceneError(path + ": cannot continue from this checkpoint: " + e.what());
+  }
+  try {
+    std::optional<h5::Group> saved_gas;
+    if (checkpoint.has_gas()) saved_gas = checkpoint.gas_state();
+    restored.gas = attach_gas(*restored.method, scene, saved_gas ? &*saved_gas : nullptr);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(path + ": cannot continue from this checkpoint: " + e.what());
+  }
+  return restored;
+}
+
 int run_scene(Scene scene, const RunOptions& options) {
   // Everything that can be wrong with a scene is found before the first file is created. A
   // signal meanwhile (placing, settling) stops it with nothing written.
@@ -410,35 +465,18 @@ int run_scene(Scene scene, const RunOptions& options) {
   if (g_stop)
     throw InterruptedBeforeStart("interrupted while the particles were placed, before the run's t = 0: nothing "
                                  "was written; run the same command again to start over");
-  std::unique_ptr<CollisionMethod> sim;
-  try {
-    sim = make_method(scene.system, scene.method);
-    sim->tag_bodies(scene.analysis.tagged_bodies);
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(scene.file + ": " + e.what());
-  }
+  StartedRun started = start_run(scene);
+  CollisionMethod& sim = *started.method;
   const fs::path dir = options.out_dir;
   const std::unique_ptr<OutputLock> lock = prepare_output_directory(dir, options.overwrite);
   const RunInfo info{scene.text, scene.name, scene.seed, std::string(method_name(scene.method.kind)), new_run_id()};
-  std::unique_ptr<FlowBoundaries> flow;
-  try {
-    flow = attach_flow(*sim, scene);
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(scene.file + ": [[inflow]]/[[outflow]]: " + e.what());
-  }
-  std::unique_ptr<GasCoupling> gas;
-  try {
-    gas = attach_gas(*sim, scene);
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(scene.file + ": [gas]: " + e.what());
-  }
   // A run file that cannot be started (an attribute HDF5 refuses, a full disk) is removed, so
   // that it does not block the corrected rerun.
   std::unique_ptr<RunFile> file;
   std::unique_ptr<RunAnalysis> analysis;
   try {
-    file = std::make_unique<RunFile>((dir / "run.h5").string(), info, sim->system(), gas.get());
-    analysis = std::make_unique<RunAnalysis>(scene, *sim);
+    file = std::make_unique<RunFile>((dir / "run.h5").string(), info, sim.system(), started.gas.get());
+    analysis = std::make_unique<RunAnalysis>(scene, sim);
     analysis->write_setup(file->path());
   } catch (...) {
     file.reset();
@@ -448,8 +486,8 @@ int run_scene(Scene scene, const RunOptions& options) {
     fs::remove(dir / "run_gas.xmf", ignored);
     throw;
   }
-  return run_loop(*sim, gas.get(), flow.get(), *file, *analysis, scene, info, dir, scene.end_time, true,
-                  options.quiet);
+  return run_loop(sim, started.gas.get(), started.flow.get(), *file, *analysis, scene, info, dir, scene.end_time,
+                  true, options.quiet);
 }
 
 int resume_run(const std::string& directory, std::optional<double> end_time, bool quiet) {
@@ -485,39 +523,16 @@ int resume_run(const std::string& directory, std::optional<double> end_time, boo
     if (!quiet) std::cout << "carom: " << directory << " is already at t = " << now << " s; nothing to do (use --end)\n";
     return kExitOk;
   }
-  std::unique_ptr<CollisionMethod> sim;
-  try {
-    sim = restore_method(scene.system, scene.method, checkpoint.method_state());
-    sim->tag_bodies(scene.analysis.tagged_bodies);
-  } catch (const std::exception& e) {
-    throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
-  }
+  StartedRun restored = restore_run(scene, checkpoint, checkpoint_path.string());
+  CollisionMethod& sim = *restored.method;
+  check_restored_state(sim, scene.method.kind, checkpoint_path.string());
   // A later end (--end) writes more: the whole run's output, estimated as for `carom run`, must
   // fit too, checked before anything is written.
-  check_output_size(scene, estimate_output(scene, sim->system().particles.size()), dir);
-  std::unique_ptr<FlowBoundaries> flow;
-  try {
-    std::optional<h5::Group> saved_flow;
-    if (checkpoint.has_flow()) saved_flow = checkpoint.flow_state();
-    if (scene.flow.any() && !saved_flow)
-      throw std::runtime_error("the scene has inflows or outflows but the checkpoint holds no /flow state");
-    flow = attach_flow(*sim, scene, saved_flow ? &*saved_flow : nullptr);
-  } catch (const std::exception& e) {
-    throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
-  }
-  std::optional<h5::Group> saved_gas;
-  if (checkpoint.has_gas()) saved_gas = checkpoint.gas_state();
-  std::unique_ptr<GasCoupling> gas;
-  try {
-    gas = attach_gas(*sim, scene, saved_gas ? &*saved_gas : nullptr);
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(checkpoint_path.string() + ": cannot continue from this checkpoint: " + e.what());
-  }
-  saved_gas.reset();
+  check_output_size(scene, estimate_output(scene, sim.system().particles.size()), dir);
   checkpoint.file.reset();  // everything is read: the run writes its next checkpoint over it
-  RunAnalysis analysis(scene, *sim, (dir / "run.h5").string(), now);
+  RunAnalysis analysis(scene, sim, (dir / "run.h5").string(), now);
   std::unique_ptr<RunFile> file = RunFile::append((dir / "run.h5").string());
-  return run_loop(*sim, gas.get(), flow.get(), *file, analysis, scene, info, dir, end, false, quiet);
+  return run_loop(sim, restored.gas.get(), restored.flow.get(), *file, analysis, scene, info, dir, end, false, quiet);
 }
 
 }  // namespace carom

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 
 #include "core/worker_pool.hpp"
 
@@ -42,8 +43,12 @@ extern "C" void on_sweep_signal(int signal) {
   g_signals = g_signals + 1;
 }
 
+/// The binary the cases run, when not this one (set_case_executable).
+std::string g_case_executable;
+
 /// The running binary, so children are the same carom whatever PATH says.
 std::string own_executable() {
+  if (!g_case_executable.empty()) return g_case_executable;
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error)
@@ -54,7 +59,10 @@ std::string own_executable() {
 
 }  // namespace
 
+void set_case_executable(std::string path) { g_case_executable = std::move(path); }
+
 void install_sweep_signal_handlers() {
+  g_signals = 0;  // a process that sweeps again (the Python module) starts with no stop asked
   struct sigaction action {};
   action.sa_handler = on_sweep_signal;
   sigemptyset(&action.sa_mask);

@@ -72,7 +72,12 @@ class ProcessPool {
   std::string executable_;
 };
 
-/// Installs the sweep's SIGINT/SIGTERM handlers (they only record the signal).
+/// Makes the cases of every later pool run `path` instead of this binary: for a process that is
+/// not carom itself (the Python module names the carom binary it was built with).
+void set_case_executable(std::string path);
+
+/// Installs the sweep's SIGINT/SIGTERM handlers (they only record the signal), with no stop
+/// recorded yet.
 void install_sweep_signal_handlers();
 /// True once SIGINT or SIGTERM reached the sweep: start nothing new.
 bool sweep_stop_requested();

@@ -1,0 +1,90 @@
+"""carom.open: run files, checkpoints and output directories read back as numpy arrays. The
+reader is checked against the file read directly with h5py, and against the units of every time
+series the test runs write.
+"""
+import json
+
+import h5py
+import numpy as np
+import pytest
+
+import carom
+from conftest import METHOD_SCENES, SCENES, h5_datasets
+
+
+def test_particles_and_gas_are_the_snapshots(cli_runs):
+    run = carom.open(cli_runs["gas_bed.toml"] / "run.h5")
+    raw = h5_datasets(run.path)
+    assert list(run.snapshots) == [0.0, 0.0025, 0.005, 0.0075, 0.01]
+    for k, t in enumerate(run.snapshots):
+        particles, gas = run.particles(t), run.gas(t)
+        assert particles["time"] == gas["time"] == t
+        for key in ("position", "velocity", "spin", "radius", "species", "id"):
+            assert np.array_equal(particles[key], raw[f"snapshots/{k:06d}/{key}"])
+        for key in ("porosity", "pressure", "velocity"):
+            assert np.array_equal(gas[key], raw[f"snapshots/{k:06d}/gas/{key}"])
+    # Between snapshots the nearest one; None the last.
+    assert run.particles(0.0026)["time"] == 0.0025 and run.particles()["time"] == 0.01
+    assert run.gas_grid["cells"].tolist() == [2, 1, 4] and run.gas_grid["closure"] == "gidaspow_blend"
+
+
+def test_series_have_their_times_shapes_and_units(cli_runs):
+    run = carom.open(cli_runs["gas_bed.toml"])  # the directory: its run.h5
+    drop = run.series("gas_pressure_drop")
+    assert drop.unit == "Pa" and drop.time.shape == drop.values.shape == (11,)
+    assert run.series("pair_collisions").values.shape == (11, 2, 2)
+    assert run.series("pressure_tensor").values.shape == (11, 3, 3)
+    assert run.series("gas_velocity_seen").values.shape == (11, 2, 3)
+    walls = len(run.walls)
+    assert run.series("wall_collisions").values.shape == (11, 2, walls)
+    assert run.series("wall_impulse").values.shape == (11, walls, 3)
+    with pytest.raises(carom.OutputError, match="no time series 'nothing'"):
+        run.series("nothing")
+
+
+@pytest.mark.parametrize("name", METHOD_SCENES)
+def test_every_series_written_has_a_unit(name, cli_runs):
+    # A series added to the run file without its unit in carom.SERIES_UNITS fails here.
+    run = carom.open(cli_runs[name])
+    missing = [series for series in run.series_names if series not in carom.SERIES_UNITS]
+    assert missing == []
+
+
+def test_summary_report_and_analysis_are_read_beside_the_file(cli_runs):
+    run = carom.open(cli_runs["gas_bed.toml"])
+    summary = json.loads((cli_runs["gas_bed.toml"] / "summary.json").read_text())
+    assert run.summary == summary and run.analysis == summary["analysis"]
+    assert run.analysis["mixing"]["species"] == "glass"
+    assert run.report == (cli_runs["gas_bed.toml"] / "report.md").read_text()
+    assert run.scene == (SCENES / "gas_bed.toml").read_text()  # no changes: the file's text
+    assert run.scene_name == "python_gas_bed" and run.method == "event_driven" and run.seed == 3
+    assert run.species_names == ["glass", "fines"]
+
+
+def test_a_checkpoint_is_read_for_what_it_holds(cli_runs):
+    checkpoint = carom.open(cli_runs["soft_box.toml"] / "checkpoint.h5")
+    assert checkpoint.kind == "checkpoint" and checkpoint.method == "soft_sphere"
+    assert checkpoint.time == 0.004
+    with pytest.raises(carom.OutputError, match="carom.Simulation.restore"):
+        checkpoint.particles()
+
+
+def test_other_files_are_refused_with_a_message(tmp_path):
+    text = tmp_path / "notes.txt"
+    text.write_text("not HDF5")
+    with pytest.raises(carom.OutputError, match="not an HDF5 file"):
+        carom.open(text)
+    other = tmp_path / "other.h5"
+    with h5py.File(other, "w") as f:
+        f.attrs["kind"] = "something else"
+    with pytest.raises(carom.OutputError, match="not a carom run file or checkpoint"):
+        carom.open(other)
+    old = tmp_path / "old.h5"
+    with h5py.File(old, "w") as f:
+        f.attrs["kind"] = "carom run"
+        f.attrs["carom_version"] = "0.0.1"
+        f["scene"] = "x"
+    with pytest.raises(carom.OutputError, match="of another layout"):
+        carom.open(old)
+    with pytest.raises(carom.OutputError, match="no such file"):
+        carom.open(tmp_path / "none")

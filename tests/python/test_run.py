@@ -1,4 +1,4 @@
-"""carom.run, carom.resume, carom.sweep: the command line's machinery called from Python.
+"""carom.run, carom.resume, carom.sweep, carom.chart: the command line's machinery called from Python.
 
 carom.run calls the function behind `carom run`, so the same scene and seed must give the same
 run.h5 bit for bit, for every method (the comparison is exact: conftest.py). Changes made with
@@ -88,3 +88,19 @@ def test_a_bad_sweep_file_raises_scene_error_with_the_command_lines_message(tmp_
     assert "outside the allowed range [0, 1]" in str(raised.value)
     for line in str(raised.value).splitlines():  # the command's lines, less their "carom sweep: error: "
         assert line in expected.stderr
+
+
+def test_chart_is_the_command_lines_chart(tmp_path):
+    # Two variants of the soft-sphere box over two seeds through carom.chart and `carom chart`:
+    # the same cases bit for bit, and the chart's tables written (their costs are CPU times, so
+    # only the cases are compared).
+    chart_file = tmp_path / "chart.toml"
+    chart_file.write_text(f'[chart]\nscene = "{SCENES / "soft_box.toml"}"\nseeds = [1, 2]\nreference = "e09"\n'
+                          '[[chart.observable]]\nkey = "mean_temperature"\ntolerance = 0.5\n'
+                          '[[chart.variant]]\nname = "e09"\n'
+                          '[[chart.variant]]\nname = "e07"\nset = { "collisions.default.e" = 0.7 }\n')
+    assert carom.chart(chart_file, out=tmp_path / "python", progress=False) == 0
+    cli("chart", chart_file, "--out", tmp_path / "cli", "--quiet")
+    assert (tmp_path / "python" / "chart.csv").exists()
+    for case in ("0000", "0001", "0002", "0003"):
+        assert_same_run(tmp_path / "cli" / "cases" / case, tmp_path / "python" / "cases" / case)

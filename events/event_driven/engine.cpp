@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "events/restored_actions.hpp"
+
 namespace carom {
 
 namespace {
@@ -270,8 +272,7 @@ EngineState EventDrivenEngine::state() const {
 void EventDrivenEngine::add_periodic_action(std::string name, double first_time, double interval,
                                             std::function<void()> action) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
-  for (const auto& [saved_name, saved_time] : restored_action_times_)
-    if (saved_name == name) first_time = saved_time;
+  first_time = restored_next_time(restored_action_times_, name, first_time, time_, interval);
   actions_.push_back(PeriodicAction{std::move(name), first_time, interval, std::move(action), {}});
   calendar_.resize(end_slot_ + 1 + actions_.size());
   calendar_.set(end_slot_ + actions_.size(), first_time);
@@ -282,8 +283,7 @@ void EventDrivenEngine::add_synchronising_action(std::string name, double first_
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
   if (!(first_time >= time_))
     throw std::invalid_argument(name + ": the first step is before the current time");
-  for (const auto& [saved_name, saved_time] : restored_action_times_)
-    if (saved_name == name) first_time = saved_time;
+  first_time = restored_next_time(restored_action_times_, name, first_time, time_, interval);
   actions_.push_back(PeriodicAction{std::move(name), first_time, interval, {}, std::move(step)});
   calendar_.resize(end_slot_ + 1 + actions_.size());
   calendar_.set(end_slot_ + actions_.size(), first_time);

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "events/restored_actions.hpp"
+
 namespace carom {
 
 Vec3 MonteCarloEngine::wrapped(Vec3 r) const {
@@ -26,8 +28,7 @@ Vec3 MonteCarloEngine::wrapped(Vec3 r) const {
 void MonteCarloEngine::add_periodic_action(std::string name, double first_time, double interval,
                                            std::function<void()> action) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
-  for (const auto& [saved_name, saved_time] : restored_action_times_)
-    if (saved_name == name) first_time = saved_time;
+  first_time = restored_next_time(restored_action_times_, name, first_time, time_, interval);
   if (computed_ && first_time < step_end_)
     throw std::logic_error(name + ": an action cannot start inside the step under way (at " +
                            std::to_string(first_time) + " s, the step ends at " +
@@ -39,8 +40,7 @@ void MonteCarloEngine::add_synchronising_action(std::string name, double first_t
                                                 std::function<void(GlobalStep&)> step) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
   if (!(first_time >= time_)) throw std::invalid_argument(name + ": the first step is before the current time");
-  for (const auto& [saved_name, saved_time] : restored_action_times_)
-    if (saved_name == name) first_time = saved_time;
+  first_time = restored_next_time(restored_action_times_, name, first_time, time_, interval);
   if (computed_ && first_time < step_end_)
     throw std::logic_error(name + ": an action cannot start inside the step under way");
   actions_.push_back(Action{std::move(name), first_time, interval, {}, std::move(step)});

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "events/restored_actions.hpp"
+
 namespace carom {
 
 namespace {
@@ -206,8 +208,7 @@ void SoftSphereEngine::hold_fixed_particles() {
 void SoftSphereEngine::add_periodic_action(std::string name, double first_time, double interval,
                                            std::function<void()> action) {
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
-  for (const auto& [saved_name, saved_time] : restored_action_times_)
-    if (saved_name == name) first_time = saved_time;
+  first_time = restored_next_time(restored_action_times_, name, first_time, time_, interval);
   actions_.push_back(SteppedAction{std::move(name), first_time, interval, std::move(action), {}});
 }
 
@@ -216,8 +217,7 @@ void SoftSphereEngine::add_synchronising_action(std::string name, double first_t
   if (!(interval > 0.0)) throw std::invalid_argument(name + ": the interval must be positive");
   if (!(first_time >= time_))
     throw std::invalid_argument(name + ": the first step is before the current time");
-  for (const auto& [saved_name, saved_time] : restored_action_times_)
-    if (saved_name == name) first_time = saved_time;
+  first_time = restored_next_time(restored_action_times_, name, first_time, time_, interval);
   actions_.push_back(SteppedAction{std::move(name), first_time, interval, {}, std::move(step)});
 }
 

@@ -3,7 +3,8 @@
 // - Value checks (the checksum rewritten after the damage, so that only they can catch it): a
 //   partner index >= N, a mass of 0 or -1, a radius of 1e84, an inertia of NaN, a speed of
 //   1e300 m/s, a NaN time in run.h5, for every method where the dataset exists.
-// - Hard spheres overlapping in the restored state refused.
+// - Hard spheres overlapping in the restored state refused; a next fluid step before the state's
+//   time or more than one step after it refused.
 // - A dataset of the state missing (the checksum rewritten) refused, for every method; a soft-
 //   sphere drag rate other than 0 in a run without gas refused.
 // - The checksum: a changed value with the old checksum, and a checkpoint without one, refused.
@@ -150,6 +151,24 @@ TEST_F(DamagedCheckpoint, OverlappingHardSpheresAreRefused) {
   damage<double>(ckpt, "/state/particles/clock", 1, clock[0]);
   expect_refused("overlap", "/state/particles/position");
   EXPECT_NE(out_.find("overlaps"), std::string::npos) << out_;
+}
+
+// The next fluid step's time moved before the state's time (fuzz_resume found the event-driven
+// clock sent back to it, and a pair overlapping after) or more than one step after it: refused by
+// every method.
+TEST_F(DamagedCheckpoint, ANextStepOutsideItsIntervalIsRefused) {
+  for (const std::string& method : kMethods) {
+    SCOPED_TRACE(method);
+    // A small gas-fluidized bed to t = 5 ms, fluid steps of 0.5 ms (the first action: fluid_step).
+    ASSERT_EQ(carom("run " CAROM_TESTS_DIR "/fuzz/resume_gas_bed.toml --method " + method + " --out steps_" + method +
+                    " --quiet --set species.glass.young_modulus=1e7"),
+              0)
+        << out_;
+    damage<double>(copy_of("steps_" + method, "step_back_" + method), "/state/actions/next_time", 0, 0.001);
+    expect_refused("step_back_" + method, "the next fluid_step at t = 0.001 s");
+    damage<double>(copy_of("steps_" + method, "step_late_" + method), "/state/actions/next_time", 0, 0.5);
+    expect_refused("step_late_" + method, "the next fluid_step at t = 0.5 s");
+  }
 }
 
 TEST_F(DamagedCheckpoint, ASoftSphereDragRateWithoutGasIsRefused) {

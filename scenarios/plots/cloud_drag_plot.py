@@ -30,21 +30,22 @@ momentum exchange coefficient"; MFiX source drag_ss.f, subroutines DRAG_SS and D
 For one big sphere l (eps_l -> 0) the force on it is F_lm |dv| V_l / eps_l, i.e.
   F = 3 (1 + e)(pi/2 + C_f pi^2/8)(D + d)^2 / (2 pi (rho_b D^3 + rho_s d^3)) rho_b phi rho_s g0 V^2 (pi/6) D^3,
 with C_f the friction coefficient (the scene's mu) and e the restitution, eps_g = 1 - phi.
-Needs numpy, h5py and matplotlib (Debian packages).
+Needs numpy, h5py and matplotlib (Debian packages); run files are read by carom_reader.py.
 """
 import argparse
 import glob
-import json
 import math
 import os
+import sys
 
-os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
-import h5py  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from carom_reader import open_run  # noqa: E402
 
 # The study (cloud_drag.toml).
 D, RHO_B = 3.6e-3, 500.0       # big sphere: m, kg/m^3
@@ -75,13 +76,11 @@ def fit_k(t, v):
 
 
 def read_run(path):
-    with h5py.File(os.path.join(path, "run.h5"), "r") as f:
-        ts = f["timeseries"]
-        t = ts["time"][()]
-        v = ts["tagged_mean_velocity"][()]
-        force = ts["tagged_mean_force"][()]
-    with open(os.path.join(path, "summary.json")) as j:
-        summary = json.load(j)
+    run = open_run(path)
+    velocity = run.series("tagged_mean_velocity")
+    t, v = velocity.time, velocity.values
+    force = run.series("tagged_mean_force").values
+    summary = run.summary
     fit = summary["analysis"]["tagged_bodies"]["inverse_speed_fit"]
     return {"t": t, "vz": v[:, 2], "fz": force[:, 2], "k": fit["k"], "k_error": fit["k_error"],
             "wall": summary.get("wall_seconds", float("nan")), "status": summary.get("status")}

@@ -19,13 +19,15 @@ import os
 import re
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from carom_reader import open_run  # noqa: E402
 
 FORCE = "analysis.mechanism.gas_force_per_weight_glass"
 MIXING = "analysis.mixing.rate"
@@ -50,10 +52,8 @@ def pressure_drops(out):
             path = os.path.join(out, "cases", "%04d" % int(r["case"]), "run.h5")
             if r["status"] != "completed" or not os.path.exists(path):
                 continue
-            with h5py.File(path, "r") as h:
-                t = h["timeseries/time"][:]
-                p = h["timeseries/gas_pressure_drop"][:]
-            drops.setdefault(r["variant"], []).append(float(np.mean(p[t >= 0.1])))
+            drop = open_run(path).series("gas_pressure_drop")
+            drops.setdefault(r["variant"], []).append(float(np.mean(drop.values[drop.time >= 0.1])))
     return drops
 
 

@@ -19,18 +19,19 @@ import os
 import sys
 import tomllib
 
-import h5py
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from carom_reader import OutputError, open_run  # noqa: E402
 
 
 def pinned(run_h5, diameter):
     """(first time a bead's centre came within one diameter of the lid, share of beads within
     3 diameters of it at the last sample), from /timeseries/plug_height."""
     try:
-        with h5py.File(run_h5, "r") as f:
-            heights = f["timeseries/plug_height"][()]
-            t = f["timeseries/time"][()]
-            lid = float(f["domain/upper"][()][2])
-    except (OSError, KeyError):
+        run = open_run(run_h5)
+        plug_height = run.series("plug_height")
+        heights, t = plug_height.values, plug_height.time
+        lid = float(run.domain["upper"][2])
+    except (OSError, OutputError):
         return None, None
     near = heights > lid - 0.5 * diameter - diameter
     first = next((t[k] for k in range(len(t)) if near[k].any()), None)
@@ -69,10 +70,8 @@ def row_of(summary, overrides, scene_text, lid):
 
 def scene_text(run_h5):
     try:
-        with h5py.File(run_h5, "r") as f:
-            v = f["scene"][()]
-            return v.decode() if isinstance(v, bytes) else str(v)
-    except (OSError, KeyError):
+        return open_run(run_h5).scene
+    except (OSError, OutputError):
         return ""
 
 

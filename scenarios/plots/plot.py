@@ -55,6 +55,7 @@ from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analysis_plots import analysis_figures  # noqa: E402
+from carom_reader import OutputError, open_run  # noqa: E402
 from flow_plots import plot_flow  # noqa: E402
 from wall_outlines import WALL_STYLE, draw_walls  # noqa: E402
 import style  # noqa: E402
@@ -565,9 +566,11 @@ def main(argv=None):
     out = args.out or os.path.dirname(os.path.abspath(args.run))
     os.makedirs(out, exist_ok=True)
     stem = os.path.splitext(os.path.basename(args.run))[0]
+    try:
+        open_run(args.run)  # a checkpoint or another file is refused with a message saying what it is
+    except OutputError as error:
+        sys.exit(str(error))
     with h5py.File(args.run, "r") as run:
-        if text(run.attrs.get("kind", b"")) != "carom run":
-            sys.exit(f"{args.run}: not a carom run file")
         if args.axes is None:
             gravity = np.asarray(run["domain/gravity"][()]) if "domain/gravity" in run else np.zeros(3)
             if np.any(gravity != 0):

@@ -97,14 +97,15 @@ void bind_simulation(py::module_& m) {
             return sim.time();
           },
           py::arg("t"),
-          "Runs to time t (s) and returns the time reached. The event-driven method stops exactly "
-          "at t without changing the run; a time-stepped method (soft spheres, Monte Carlo) cuts "
-          "its last step to land on t unless t is a step boundary (stop_time(t) gives the next "
-          "one), as `carom run` does at an output instant. Ctrl-C stops it at a consistent state "
+          "Runs to time t (s) and returns the time reached. The event-driven and Monte Carlo "
+          "methods stop exactly at t without changing the run; soft spheres cut their last step "
+          "to land on t unless t is a step boundary (stop_time(t) gives the next one), as `carom "
+          "run` does at an output instant. Ctrl-C stops it at a consistent state "
           "(KeyboardInterrupt); advance again to go on.")
       .def("stop_time", &Simulation::stop_time, py::arg("t"),
            "The earliest time >= t at which the method can stop without changing the run: t for "
-           "the event-driven method, the next step boundary of a time-stepped one.")
+           "the event-driven and Monte Carlo methods, the next step boundary (or synchronising "
+           "action) for soft spheres.")
       .def_property_readonly("time", &Simulation::time, "The current time, s.")
       .def_property_readonly("method", [](const Simulation& sim) { return std::string(sim.method().kind()); })
       .def_property_readonly("scene_text", [](const Simulation& sim) { return sim.scene().text; })

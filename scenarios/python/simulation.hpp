@@ -23,13 +23,15 @@ class Simulation {
 
   /// Runs to time t, s (t at or before the current time: nothing to do). Returns false when a
   /// stop signal (Ctrl-C) came first: the state is then a consistent one short of t.
-  /// As `carom run` at an output instant, the method stops exactly at t: the event-driven
-  /// method's stop touches no particle, so any t leaves the run unchanged; a time-stepped
-  /// method (soft spheres, Monte Carlo) cuts its last step to land on t, unless t is a step
-  /// boundary (stop_time). Throws the method's failures (InelasticCollapse, MethodFailure, ...).
+  /// As `carom run` at an output instant, the method stops exactly at t. The event-driven
+  /// method's stop touches no particle and Monte Carlo shows its particles part way through a
+  /// step it finishes later, so any t leaves their runs unchanged; soft spheres cut their last
+  /// step to land on t, unless t is a step boundary (stop_time). Throws the method's failures
+  /// (InelasticCollapse, MethodFailure, ...).
   bool advance(double t);
   /// The earliest time >= t at which the method stops without changing the run: t for the
-  /// event-driven method, the next step boundary or synchronising action of a time-stepped one.
+  /// event-driven and Monte Carlo methods, the next step boundary or synchronising action for
+  /// soft spheres.
   double stop_time(double t) const { return started_.method->stop_time(t); }
   /// The current time, s.
   double time() const { return started_.method->time(); }

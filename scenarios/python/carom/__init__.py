@@ -21,7 +21,8 @@ from ._carom import Check, RunError, Scene, SceneError, Simulation, version
 from ._output import Output, OutputError, Series, SERIES_UNITS, open
 
 __version__ = version
-__all__ = ["Scene", "SceneError", "RunError", "Check", "Simulation", "run", "resume", "sweep", "chart", "open",
+# carom.open is left out: `from carom import *` must not hide the built-in open.
+__all__ = ["Scene", "SceneError", "RunError", "Check", "Simulation", "run", "resume", "sweep", "chart",
            "Output", "OutputError", "Series", "SERIES_UNITS", "executable"]
 
 #: The `carom` binary built with this module (the cases of sweep() and chart() run it).

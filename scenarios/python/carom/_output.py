@@ -20,7 +20,7 @@ import os
 import h5py
 import numpy as np
 
-__all__ = ["Output", "OutputError", "Series", "open", "SERIES_UNITS"]
+__all__ = ["Output", "OutputError", "Series", "SERIES_UNITS"]  # and open, kept out of star imports
 
 
 class OutputError(ValueError):

@@ -34,8 +34,13 @@ std::string toml_value(const py::handle& value) {
   }
   if (py::isinstance<py::dict>(value)) {
     std::string text = "{";
-    for (const auto& [key, item] : value.cast<py::dict>())
-      text += (text.size() > 1 ? ", " : " ") + py::str(key).cast<std::string>() + " = " + toml_value(item);
+    for (const auto& [key, item] : value.cast<py::dict>()) {
+      std::string name = py::str(key).cast<std::string>();
+      const bool bare = !name.empty() && name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                                 "0123456789_-") == std::string::npos;
+      if (!bare) name = toml_value(py::str(name));  // a quoted key
+      text += (text.size() > 1 ? ", " : " ") + name + " = " + toml_value(item);
+    }
     return text + " }";
   }
   if (py::hasattr(value, "__index__")) return py::str(py::int_(py::reinterpret_borrow<py::object>(value))).cast<std::string>();

@@ -59,6 +59,9 @@ def test_values_of_every_toml_kind_are_accepted():
     scene = carom.Scene.from_file(str(SOFT))
     scene.set("domain.gravity", [0, 0, -9.0])             # an array of numbers (ints too)
     scene.set("collisions.walls", {"e": 0.5, "mu": 0.1, "beta0": 0.0})  # an inline table
+    assert scene.changes[-1] == "collisions.walls={ e = 0.5, mu = 0.1, beta0 = 0.0 }"
+    with pytest.raises(carom.SceneError, match="unknown key 'collisions.walls.e.x'"):
+        scene.set("collisions.walls", {"e.x": 0.5})  # a key that needs quotes: not a dotted path
     scene.set("time.end", 0.002)
     scene.set("initial.seed", 7)
     assert scene.end_time == 0.002 and scene.seed == 7

@@ -90,6 +90,7 @@ std::string RunAnalysis::summary_json(const CollisionMethod& sim) const {
   if (c.tagged.bodies > 0) j << "    \"tagged_bodies\": " << tagged_json(c.tagged) << ",\n";
   if (c.has_profiles) j << "    \"profiles\": " << profiles_json(profiles_, c.profiles) << ",\n";
   if (!c.plugs.empty()) j << "    \"plugs\": " << plugs_json(plugs_, c.plugs) << ",\n";
+  if (c.has_bed) j << "    \"bed\": " << bed_json(bed_, c.bed) << ",\n";
   j << "    \"mechanism\": {";
   std::vector<std::pair<std::string, double>> mechanism;
   for (std::size_t s = 0; s < S; ++s) {
@@ -176,7 +177,8 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
   // Sections every run may have after the mechanism's.
   const std::string tail = tagged_report(c.tagged) +
                            (c.has_profiles ? profiles_report(profiles_, c.profiles) : "") +
-                           (c.plugs.empty() ? "" : plugs_report(plugs_, c.plugs));
+                           (c.plugs.empty() ? "" : plugs_report(plugs_, c.plugs)) +
+                           (c.has_bed ? bed_report(bed_, c.bed) : "");
   if (!several && !c.gas) return r.str() + tail;
   r << "\n## " << (several ? "Mechanism" : "Gas seen by the particles") << "\n\n";
   if (several && c.gas)

@@ -75,6 +75,12 @@ std::vector<std::pair<std::string, std::size_t>> RunAnalysis::widths() const {
     all.emplace_back("axial_solid_fraction", static_cast<std::size_t>(plugs_.bins));
     all.emplace_back("plug_height", ids_.size());
   }
+  if (bed_enabled_) {
+    all.emplace_back("bed_height", bed_.height_width());
+    if (bed_.gas) all.emplace_back("bed_pressure", 3);
+    if (bed_.gas && bed_.probe_width() > 0) all.emplace_back("bed_probe_pressure", bed_.probe_width());
+    all.emplace_back("bed_map_sums", bed_.map_width());
+  }
   return all;
 }
 
@@ -104,6 +110,10 @@ RunAnalysis::RunAnalysis(const Scene& scene, const CollisionMethod& sim) : scene
                                 system.domain.upper[s.axis],
                                 system.domain.upper[third] - system.domain.lower[third],
                                 s.start};
+  }
+  if (a.bed.enabled) {
+    bed_enabled_ = true;
+    bed_ = bed_geometry(scene);
   }
   if (a.plugs.enabled) {
     double largest = 0.0;
@@ -226,6 +236,15 @@ void RunAnalysis::write_setup(const std::string& run_file) const {
     sub.set_attribute("diameter", plugs_.diameter);
     sub.set_attribute("min_bins", static_cast<std::int64_t>(plugs_.min_bins));
   }
+  if (bed_enabled_) write_bed_setup(group, bed_);
+  file.flush();
+}
+
+void RunAnalysis::write_results(const std::string& run_file, const CollisionMethod& sim) const {
+  if (!bed_enabled_) return;
+  const Conclusions c = conclude(sim);
+  const h5::File file = h5::File::open(run_file, true);
+  write_bed_results(file.open_group("analysis"), bed_, c.bed);
   file.flush();
 }
 
@@ -325,6 +344,14 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
                    axial_solid_fraction(height, radius, plugs_.bottom, plugs_.bin, plugs_.bins,
                                         plugs_.area)});
     row.push_back({"plug_height", ids_.size(), by_id});
+  }
+  if (bed_enabled_) {
+    BedSample bed = sample_bed(bed_, sim, gas);
+    row.push_back({"bed_height", bed_.height_width(), std::move(bed.heights)});
+    if (bed_.gas) row.push_back({"bed_pressure", 3, std::move(bed.pressure)});
+    if (bed_.gas && bed_.probe_width() > 0)
+      row.push_back({"bed_probe_pressure", bed_.probe_width(), std::move(bed.probes)});
+    row.push_back({"bed_map_sums", bed_.map_width(), std::move(bed.map)});
   }
   if (!tagged_ids_.empty()) {
     const std::vector<double>& previous = history_["tagged_impulse"];
@@ -446,6 +473,18 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
     const auto* heights = series("plug_height");
     if (profiles != nullptr && heights != nullptr)
       c.plugs = conclude_plugs(plugs_, times_, *profiles, *heights, ids_.size());
+  }
+  if (bed_enabled_) {
+    const auto* heights = series("bed_height");
+    const auto* map = series("bed_map_sums");
+    const auto* pressure = series("bed_pressure");
+    const auto* probes = series("bed_probe_pressure");
+    const std::vector<double> none;
+    if (heights != nullptr && map != nullptr) {
+      c.has_bed = true;
+      c.bed = conclude_bed(bed_, times_, *heights, pressure != nullptr ? *pressure : none,
+                           probes != nullptr ? *probes : none, *map);
+    }
   }
   return c;
 }

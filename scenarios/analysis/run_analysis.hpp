@@ -16,7 +16,8 @@
 ///   porosity_seen          S: mean porosity at the species' particles
 /// (the last three with a gas), with tagged bodies their series (tagged_bodies.hpp), and with
 /// [analysis.profiles] the sums of the profiles across sections (section_profiles.hpp), and with
-/// [analysis.plugs] the axial solid fraction and every particle's height (plugs.hpp). The tags
+/// [analysis.plugs] the axial solid fraction and every particle's height (plugs.hpp), and with
+/// [analysis.bed] the bed heights, pressures and map sums (bed_measures.hpp). The tags
 /// and start heights are stored in run.h5 /analysis so a resumed run carries on with them; the
 /// whole history is read back, so the conclusions always cover the run from t = 0.
 #include <cmath>
@@ -27,6 +28,7 @@
 #include "events/flow/flow_boundaries.hpp"
 #include "events/method.hpp"
 #include "fluid/coupling.hpp"
+#include "scenarios/analysis/bed_measures.hpp"
 #include "scenarios/analysis/dispersion.hpp"
 #include "scenarios/analysis/mixing.hpp"
 #include "scenarios/analysis/plugs.hpp"
@@ -59,6 +61,9 @@ class RunAnalysis {
   void write_setup(const std::string& run_file) const;
   /// Measures a sample at sim.time(), remembers it and returns it for the run file.
   SeriesRow sample(const CollisionMethod& sim, const GasCoupling* gas);
+  /// The conclusions that go into the run file: with [analysis.bed], /analysis/bed/results
+  /// (replaced at every call: each stretch of a run ends with its own).
+  void write_results(const std::string& run_file, const CollisionMethod& sim) const;
   /// The "analysis" object of summary.json (JSON text, no trailing newline).
   std::string summary_json(const CollisionMethod& sim) const;
   /// report.md: the numbers, with what they say about the mechanism.
@@ -97,6 +102,8 @@ class RunAnalysis {
     bool has_profiles = false;                  ///< Profiles across sections measured.
     ProfileConclusions profiles;
     std::vector<PlugConclusions> plugs;  ///< One per threshold (empty: no plug analysis).
+    bool has_bed = false;                ///< Bed measures taken.
+    BedConclusions bed;
   };
   Conclusions conclude(const CollisionMethod& sim) const;
   const FlowBoundaries* flow_ = nullptr;
@@ -113,6 +120,8 @@ class RunAnalysis {
   std::size_t tagged_partners_ = 0;        ///< Their partner categories: S species + W walls.
   ProfileGeometry profiles_;               ///< Profiles across sections (no heights: none).
   PlugGeometry plugs_;                     ///< Plugs along the vertical axis (bins = 0: none).
+  bool bed_enabled_ = false;               ///< [analysis.bed] given.
+  BedGeometry bed_;                        ///< Its geometry.
   /// Every series this run may write and its width.
   std::vector<std::pair<std::string, std::size_t>> widths() const;
   /// Every series sampled so far (since t = 0), by name, row after row.

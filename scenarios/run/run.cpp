@@ -253,6 +253,7 @@ int run_loop(CollisionMethod& sim, const GasCoupling* gas, const FlowBoundaries*
     stretch.status = status;
     stretch.message = message;
     stretch.wall_seconds = wall_seconds();
+    analysis.write_results(file.path(), sim);
     stretch.analysis_json = analysis.summary_json(sim);
     write_text_atomically(summary_path, summary_json(sim, scene, stretch));
     write_text_atomically(report_path, analysis.report(sim));
@@ -368,7 +369,10 @@ std::unique_ptr<OutputLock> prepare_output_directory(const fs::path& dir, bool o
                            "run_collisions.png",
                            "run_profiles.png",
                            "run_flow.png",
-                           "run_plugs.png"};
+                           "run_plugs.png",
+                           "run_bed.png",
+                           "run_bed_spectrum.png",
+                           "run_bed_map.png"};
   std::error_code error;
   if (fs::exists(dir, error) && !fs::is_directory(dir, error))
     throw SceneError(dir.string() + ": --out names a file, not a directory");

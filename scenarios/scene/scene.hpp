@@ -115,6 +115,22 @@ struct PlugSettings {
   double rate_window = 0.05;  ///< Shortest window of the bed-top speeds, s.
 };
 
+/// [analysis.bed]: bed heights, pressure drop against weight, gas pressure at probes, mid-plane
+/// maps (scenarios/analysis/bed_measures.hpp); the scene reader resolves every default.
+struct BedSettings {
+  bool enabled = false;
+  std::vector<double> height_shares{0.95, 0.99};  ///< Shares q of the share heights, in (0, 1].
+  double threshold = 0.1;         ///< Solid fraction that marks the bed surface.
+  double bin = 0;                 ///< Bin thickness of the solid-fraction profile, m.
+  double start = 0;               ///< Samples before this time are left out of the conclusions, s.
+  std::vector<Vec3> probes;       ///< Gas pressure probe points, m.
+  std::vector<double> probe_heights;  ///< Heights above the floor of cross-section means, m.
+  int map_axis = 0;               ///< Axis across the maps (0 x, 1 y, 2 z; not the vertical).
+  std::array<int, 2> map_bins{1, 1};  ///< Map bins across and up.
+  double map_centre = 0;          ///< Slab centre along the third axis, m.
+  double map_thickness = 0;       ///< Slab thickness along the third axis, m.
+};
+
 struct AnalysisSettings {
   /// Mixing: the particles of this species are tagged by their height at t = 0 (lower and upper
   /// half); -1: no mixing analysis.
@@ -129,6 +145,7 @@ struct AnalysisSettings {
   std::vector<std::uint64_t> tagged_bodies;
   ProfileSettings profiles;  ///< Profiles across sections (none when heights is empty).
   PlugSettings plugs;        ///< Plugs in a narrow tube.
+  BedSettings bed;           ///< Fluidized-bed measures.
 };
 
 struct Scene {

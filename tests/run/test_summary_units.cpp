@@ -150,12 +150,14 @@ TEST(SummaryUnitsTable, RowsAreUniqueWithKnownUnitsAndEachIsOnThePage) {
 }
 
 // Six runs: a periodic gas of two species (Enskog, segregation), a gas-fluidized bed with
-// [analysis] mixing, a walled gas with a tagged body and profiles, a fed duct with soft spheres
+// [analysis] mixing and bed measures, a walled gas with a tagged body and profiles, a fed duct with soft spheres
 // (flow, soft-sphere quantities), a gas with the Monte Carlo method, a tube with plugs. About
 // 3 s together.
 TEST_F(SummaryUnits, EveryKeyOfSummaryJsonHasItsUnit) {
   check_run(scene("gas.toml", kSmallGas), "gas");
-  check_run(kScenes + "/small_bed.toml --set time.end=0.1", "bed");
+  check_run(kScenes + "/small_bed.toml --set time.end=0.1 --set 'analysis.bed.probes=[[0.004, 0.002, 0.002]]'"
+                      " --set 'analysis.bed.probe_heights=[0.01]'",
+            "bed");
   check_run(scene("walled.toml", kWalledGas), "walled");
   check_run(kScenes + "/duct_flow.toml --set method.kind='\"soft_sphere\"' --set time.end=0.1", "duct");
   check_run(kScenes + "/mc_gas.toml --set method.kind='\"monte_carlo\"' --set time.end=0.1", "mc");

@@ -56,6 +56,35 @@ void check_no_nan(const h5::Group& group, const std::string& file) {
   }
 }
 
+/// The gas state: every floating-point value finite, every gas velocity at most kMaxSpeed, every
+/// porosity in [0, 1]. A wild but finite field would pass the NaN check and make the gas solver
+/// diverge at its first step.
+void check_gas(const std::string& file, const h5::Group& gas) {
+  for (const std::string& name : gas.children()) {
+    H5O_info_t info;
+    if (H5Oget_info_by_name2(gas.id(), name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0 ||
+        info.type != H5O_TYPE_DATASET)
+      continue;
+    const h5::Dataset data = gas.open_dataset(name);
+    const hid_t type = H5Dget_type(data.id());
+    const bool floating = H5Tget_class(type) == H5T_FLOAT;
+    H5Tclose(type);
+    if (!floating) continue;
+    const std::string path = "/gas/" + name;
+    const bool speed = name.starts_with("face_velocity_") || name.ends_with("gas_velocity");
+    const bool porosity = name == "porosity" || name == "previous_porosity";
+    const std::vector<double> values = data.read<double>();
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const double x = values[k];
+      if (!std::isfinite(x)) refuse(file, path, "value " + std::to_string(k) + " is " + number(x) + ", not finite");
+      if (speed && std::abs(x) > kMaxSpeed)
+        refuse(file, path, "value " + std::to_string(k) + " is " + number(x) + " m/s, above the bound " + number(kMaxSpeed) + " m/s");
+      if (porosity && !(x >= 0.0 && x <= 1.0))
+        refuse(file, path, "value " + std::to_string(k) + " is " + number(x) + ", not a porosity in [0, 1]");
+    }
+  }
+}
+
 struct ParticleChecks {
   const std::string& file;
   const h5::Group& particles;
@@ -154,6 +183,7 @@ static void check_state(const Checkpoint& checkpoint, const System& system) {
   if (!(std::isfinite(now) && now >= 0)) refuse(file, "/state", "attribute time is " + number(now) + ", not a finite time >= 0");
   for (const char* group : {"state", "gas", "flow"})
     if (f.contains(group)) check_no_nan(f.open_group(group), file);
+  if (f.contains("gas")) check_gas(file, f.open_group("gas"));
 
   if (!state.contains("particles")) refuse(file, "/state/particles", "is missing");
   const h5::Group particles = state.open_group("particles");

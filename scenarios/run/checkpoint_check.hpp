@@ -22,7 +22,8 @@ namespace carom {
 /// positive and finite, clock finite and not after the time, species index below the species
 /// count, ids unique; for the event-driven engine each event's and crossing's partner in range
 /// of its kind (particle, wall, face), its time not NaN and not before the particle's clock; no
-/// floating-point value anywhere in /state, /gas or /flow NaN. Throws SceneError.
+/// floating-point value anywhere in /state, /gas or /flow NaN; in /gas every value finite, gas
+/// velocities at most kMaxSpeed and porosities in [0, 1]. Throws SceneError.
 void check_checkpoint_state(const Checkpoint& checkpoint, const System& system);
 
 /// Checks the state a method was rebuilt into from the checkpoint at `checkpoint_path`, at its

@@ -153,10 +153,11 @@ TEST_F(DamagedCheckpoint, OverlappingHardSpheresAreRefused) {
   EXPECT_NE(out_.find("overlaps"), std::string::npos) << out_;
 }
 
-// The next fluid step's time moved before the state's time (fuzz_resume found the event-driven
-// clock sent back to it, and a pair overlapping after) or more than one step after it: refused by
-// every method.
-TEST_F(DamagedCheckpoint, ANextStepOutsideItsIntervalIsRefused) {
+// A small gas-fluidized bed's checkpoint, damaged under a re-sealed checksum, for every method: the
+// next fluid step's time moved before the state's time (fuzz_resume found the event-driven clock
+// sent back to it, and a pair overlapping after) or more than one step after it; a gas speed of
+// 1e300 m/s; a porosity of 1.5. Each refused, naming what is wrong.
+TEST_F(DamagedCheckpoint, ADamagedGasBedStateIsRefused) {
   for (const std::string& method : kMethods) {
     SCOPED_TRACE(method);
     // A small gas-fluidized bed to t = 5 ms, fluid steps of 0.5 ms (the first action: fluid_step).
@@ -168,6 +169,11 @@ TEST_F(DamagedCheckpoint, ANextStepOutsideItsIntervalIsRefused) {
     expect_refused("step_back_" + method, "the next fluid_step at t = 0.001 s");
     damage<double>(copy_of("steps_" + method, "step_late_" + method), "/state/actions/next_time", 0, 0.5);
     expect_refused("step_late_" + method, "the next fluid_step at t = 0.5 s");
+    // Gas fields wild but not NaN: refused before the solver diverges on them.
+    damage<double>(copy_of("steps_" + method, "gas_speed_" + method), "/gas/face_velocity_z", 2, 1e300);
+    expect_refused("gas_speed_" + method, "/gas/face_velocity_z");
+    damage<double>(copy_of("steps_" + method, "gas_porosity_" + method), "/gas/porosity", 1, 1.5);
+    expect_refused("gas_porosity_" + method, "/gas/porosity");
   }
 }
 

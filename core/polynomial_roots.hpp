@@ -39,6 +39,10 @@ struct Quartic {
 /// constant.
 double root_bound(const Quartic& p);
 
+/// The wall searches report contacts later than this (s) as never: a quartic is evaluated no
+/// further than this along a flight.
+inline constexpr double kLongestFlight = 1e12;
+
 /// A root of f in [lo, hi] where f(lo) = value_lo and f(hi) = value_hi are non-zero with
 /// opposite signs; `f(x)` returns {f(x), f'(x)}. Safeguarded Newton (as rtsafe) from `guess`
 /// if it lies inside (lo, hi) (the root of a nearby function, say), else from the end nearer

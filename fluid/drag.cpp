@@ -12,11 +12,10 @@
 namespace carom {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 /// The Stokes drag 3 pi mu d of a sphere, kg/s.
 double stokes_coefficient(const DragInput& in) {
-  return 3.0 * kPi * in.gas_viscosity * in.diameter;
+  return 3.0 * std::numbers::pi * in.gas_viscosity * in.diameter;
 }
 
 /// Solves f(U) = 0 for U > 0 by bisection in log U; f increasing, f(0+) < 0. `guess` > 0.
@@ -60,7 +59,7 @@ double reynolds_number(const DragInput& in) {
 }
 
 double particle_volume(double diameter) {
-  return kPi / 6.0 * diameter * diameter * diameter;
+  return std::numbers::pi / 6.0 * diameter * diameter * diameter;
 }
 
 double schiller_naumann_factor(double reynolds) {
@@ -146,7 +145,7 @@ double gidaspow_drag(const DragInput& in) {
 }
 
 double gidaspow_blend_weight(double porosity) {
-  return 0.5 + std::atan(262.5 * (porosity - 0.8)) / kPi;
+  return 0.5 + std::atan(262.5 * (porosity - 0.8)) / std::numbers::pi;
 }
 
 double gidaspow_blend_drag(const DragInput& in) {

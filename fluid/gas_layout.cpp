@@ -6,18 +6,17 @@
 
 namespace carom::gas_detail {
 
-namespace {
-
-using Triplet = Eigen::Triplet<double>;
-
-/// Position of entry (row, col) in a compressed column-major matrix.
-int position(const SparseMatrix& m, int row, int col) {
+int entry_position(const SparseMatrix& m, int row, int col) {
   const int* inner = m.innerIndexPtr();
   const int begin = m.outerIndexPtr()[col], end = m.outerIndexPtr()[col + 1];
   const int* found = std::lower_bound(inner + begin, inner + end, row);
   assert(found != inner + end && *found == row);
   return static_cast<int>(found - inner);
 }
+
+namespace {
+
+using Triplet = Eigen::Triplet<double>;
 
 /// A compressed n x n matrix with the given entries (values 0).
 SparseMatrix pattern(int n, const std::vector<Triplet>& entries) {
@@ -132,11 +131,11 @@ GasLayout::GasLayout(const GasGrid& grid, const std::array<GasBoundary, 6>& boun
     }
     momentum_slot[a].assign(m, {-1, -1, -1, -1, -1, -1, -1});
     for (int u = 0; u < m; ++u) {
-      momentum_slot[a][u][0] = position(momentum_pattern[a], u, u);
+      momentum_slot[a][u][0] = entry_position(momentum_pattern[a], u, u);
       for (int dir = 0; dir < 6; ++dir) {
         const int g = neighbour[a][unknown_face[a][u]][dir];
         if (g >= 0 && unknown[a][g] >= 0)
-          momentum_slot[a][u][1 + dir] = position(momentum_pattern[a], u, unknown[a][g]);
+          momentum_slot[a][u][1 + dir] = entry_position(momentum_pattern[a], u, unknown[a][g]);
       }
     }
   }
@@ -204,13 +203,13 @@ GasLayout::GasLayout(const GasGrid& grid, const std::array<GasBoundary, 6>& boun
   pressure_pattern = pattern(m, entries);
   pressure_slot.assign(m, {-1, -1, -1, -1, -1, -1, -1});
   for (int u = 0; u < m; ++u) {
-    pressure_slot[u][0] = position(pressure_pattern, u, u);
+    pressure_slot[u][0] = entry_position(pressure_pattern, u, u);
     for (int a = 0; a < 3; ++a)
       for (int sign : {-1, 1}) {
         int face = -1;
         const int other = across(a, sign, active_cell[u], face);
         if (other >= 0 && unknown[a][face] >= 0 && active[other] >= 0)
-          pressure_slot[u][1 + direction(a, sign)] = position(pressure_pattern, u, active[other]);
+          pressure_slot[u][1 + direction(a, sign)] = entry_position(pressure_pattern, u, active[other]);
       }
   }
 }

@@ -16,6 +16,10 @@ namespace carom::gas_detail {
 /// Sparse matrix type of the solver (column-major, as Eigen's Cholesky wants).
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
+/// Position of entry (row, col), which must be stored, in a compressed column-major matrix's
+/// value array.
+int entry_position(const SparseMatrix& m, int row, int col);
+
 /// A cell's open fraction at or below this is solid (no gas), dimensionless.
 inline constexpr double kClosedFraction = 1e-12;
 

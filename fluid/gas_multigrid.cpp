@@ -10,15 +10,6 @@ namespace {
 /// Levels stop coarsening at this many unknowns (then a Cholesky solve is cheap).
 constexpr int kCoarsestUnknowns = 256;
 
-int position(const SparseMatrix& m, int row, int col) {
-  const int* inner = m.innerIndexPtr();
-  const int* begin = inner + m.outerIndexPtr()[col];
-  const int* end = inner + m.outerIndexPtr()[col + 1];
-  const int* found = std::lower_bound(begin, end, row);
-  assert(found != end && *found == row);
-  return static_cast<int>(found - inner);
-}
-
 }  // namespace
 
 void PressureMultigrid::analyze(const SparseMatrix& pattern,
@@ -71,7 +62,7 @@ void PressureMultigrid::analyze(const SparseMatrix& pattern,
     for (int col = 0; col < n; ++col)
       for (int k = outer[col]; k < outer[col + 1]; ++k)
         level.coarse_position[k] =
-            position(coarse, level.aggregate[inner[k]], level.aggregate[col]);
+            entry_position(coarse, level.aggregate[inner[k]], level.aggregate[col]);
     levels_.emplace_back();
     levels_.back().matrix = std::move(coarse);
     coords = std::move(coarse_coords);

@@ -8,7 +8,6 @@
 namespace carom {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 // --- Accurate differences of squares ------------------------------------------------------
 //
@@ -53,7 +52,7 @@ double squares_left(double r, double e, double z) {
 
 /// T(e, z) with w = sqrt(r^2 - e^2 - z^2) given.
 double edge_term(double e, double z, double w, double r) {
-  const double angle_e = e == 0.0 ? 0.5 * kPi : std::atan2(w, e);
+  const double angle_e = e == 0.0 ? 0.5 * std::numbers::pi : std::atan2(w, e);
   const double angle_z = std::atan2(z, w);
   const double p = r * r * z - z * z * z / 3.0;
   return 0.5 * p * angle_e - e * angle_z * (3.0 * r * r - e * e) / 6.0 - e * z * w / 3.0 +
@@ -62,7 +61,7 @@ double edge_term(double e, double z, double w, double r) {
 
 double corner_primitive(double a, double b, double z, double w_a, double w_b, double r) {
   const double p = r * r * z - z * z * z / 3.0;
-  return edge_term(a, z, w_a, r) + edge_term(b, z, w_b, r) - 0.25 * kPi * p + a * b * z;
+  return edge_term(a, z, w_a, r) + edge_term(b, z, w_b, r) - 0.25 * std::numbers::pi * p + a * b * z;
 }
 
 /// V3(a, b, c) for a, b, c >= 0.
@@ -78,7 +77,7 @@ double positive_corner(double a, double b, double c, double r) {
 }
 
 double ball_volume(double r) {
-  return 4.0 / 3.0 * kPi * r * r * r;
+  return 4.0 / 3.0 * std::numbers::pi * r * r * r;
 }
 
 /// |{z >= c}| of the ball.
@@ -87,7 +86,7 @@ double cap_volume(double c, double r) {
   if (c <= -r) return ball_volume(r);
   if (c < 0.0) return ball_volume(r) - cap_volume(-c, r);
   const double h = r - c;
-  return kPi * h * h * (2.0 * r + c) / 3.0;
+  return std::numbers::pi * h * h * (2.0 * r + c) / 3.0;
 }
 
 /// |{y >= b, z >= c}| of the ball.
@@ -105,7 +104,7 @@ double wedge_volume(double b, double c, double r) {
 /// |{y >= b}| of the disk of radius R.
 double segment_area(double b, double radius) {
   if (b >= radius) return 0.0;
-  const double full = kPi * radius * radius;
+  const double full = std::numbers::pi * radius * radius;
   if (b <= -radius) return full;
   if (b < 0.0) return full - segment_area(-b, radius);
   const double x = std::sqrt((radius - b) * (radius + b));
@@ -187,7 +186,7 @@ double disk_corner_area(double a, double b, double radius) {
   // acos(b / R) = atan2(X, b) with X = sqrt(R^2 - b^2), accurate near tangency.
   const double x = std::sqrt((radius - b) * (radius + b)),
                y = std::sqrt((radius - a) * (radius + a));
-  return std::max(0.0, 0.5 * radius * radius * (std::atan2(x, b) + std::atan2(y, a) - 0.5 * kPi) -
+  return std::max(0.0, 0.5 * radius * radius * (std::atan2(x, b) + std::atan2(y, a) - 0.5 * std::numbers::pi) -
                            0.5 * b * x - 0.5 * a * y + a * b);
 }
 

@@ -9,7 +9,6 @@
 namespace carom {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 /// The index of `name` in `names`; throws std::invalid_argument listing them.
 template <std::size_t N>
@@ -61,7 +60,7 @@ Vec3 oesterle_bui_dinh_lift(const SpinForceInput& in) {
   const double d = in.diameter;
   const double reynolds = in.gas_density * d * slip / in.gas_viscosity;
   const double cl = oesterle_bui_dinh_lift_coefficient(d * rotation / (2.0 * slip), reynolds);
-  return (kPi / 8.0 * in.gas_density * d * d * cl * slip / rotation) *
+  return (std::numbers::pi / 8.0 * in.gas_density * d * d * cl * slip / rotation) *
          in.relative_rotation.cross(in.slip);
 }
 
@@ -72,7 +71,7 @@ double rotational_reynolds_number(const SpinForceInput& in) {
 
 double dennis_rotational_coefficient(double rotational_reynolds) {
   const double re = rotational_reynolds;
-  if (re <= 32.0) return 64.0 * kPi / re;
+  if (re <= 32.0) return 64.0 * std::numbers::pi / re;
   return 12.9 / std::sqrt(re) + 128.4 / re;
 }
 

@@ -29,11 +29,6 @@
 
 namespace carom {
 
-namespace {
-/// Contacts later than this (s) are reported as never: F is evaluated no further.
-constexpr double kLongestFlight = 1e12;
-}  // namespace
-
 ConeWall::ConeWall(double axis_x, double axis_y, double z_bottom, double radius_bottom,
                    double z_top, double radius_top)
     : axis_x_(axis_x),

@@ -39,8 +39,6 @@ namespace carom {
 
 namespace {
 
-/// Contacts later than this (s) are reported as never: F is evaluated no further.
-constexpr double kLongestFlight = 1e12;
 /// Two distances (to a feature, to the plate) count as equal within this fraction of the
 /// lengths involved: far above their round-off (a few eps), far below any geometric difference
 /// that matters (a sphere accepted on a feature 1e-12 of the lengths farther than the plate).

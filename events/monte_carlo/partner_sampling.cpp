@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/contact_value.hpp"
+
 namespace carom {
 
 Vec3 sample_partner_velocity(const PartnerStatistics& partners, Rng& rng) {
@@ -27,9 +29,7 @@ double contact_value(ContactValue kind, double solid_fraction, double xi2, doubl
   if (kind == ContactValue::None) return 1.0;
   const double phi = std::clamp(solid_fraction, 0.0, 0.6);
   if (solid_fraction > phi) xi2 *= phi / solid_fraction;  // the same cap on the size moment
-  const double h = d1 * d0 / (d1 + d0);
-  const double free = 1.0 - phi;
-  return 1.0 / free + 3.0 * h * xi2 / (free * free) + 2.0 * h * h * xi2 * xi2 / (free * free * free);
+  return bmcsl_contact_value(phi, xi2, d1, d0);
 }
 
 }  // namespace carom

@@ -20,11 +20,9 @@ Vec3 sample_partner_velocity(const PartnerStatistics& partners, Rng& rng);
 Vec3 sample_impact_normal(const Vec3& relative_velocity, Rng& rng);
 
 /// The factor that multiplies the collision frequency of a particle of diameter d1 (m) with
-/// partners of diameter d0 (m): 1, or (Enskog) the mixture contact value of Boublik,
-/// Mansoori, Carnahan, Starling and Leland (tests/VALIDATION.md, "Mixtures")
-///   g = 1/(1-phi) + 3 h xi2/(1-phi)^2 + 2 h^2 xi2^2/(1-phi)^3,  h = d1 d0/(d1 + d0),
-/// which for one size is Carnahan-Starling's (1 - phi/2)/(1 - phi)^3. phi: the cell's solid
-/// fraction (capped at 0.6, where the formula has long left the fluid branch), xi2 in 1/m.
+/// partners of diameter d0 (m): 1, or (Enskog) the mixture contact value
+/// bmcsl_contact_value (core/contact_value.hpp). phi: the cell's solid fraction (capped at 0.6,
+/// where the formula has long left the fluid branch), xi2 in 1/m.
 double contact_value(ContactValue kind, double solid_fraction, double xi2, double d1, double d0);
 
 }  // namespace carom

@@ -1,5 +1,6 @@
 #include "scenarios/analysis/dispersion.hpp"
 
+#include "core/nan.hpp"
 #include "scenarios/analysis/log_least_squares.hpp"
 
 #include <algorithm>
@@ -12,7 +13,6 @@
 namespace carom {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
 double mean_squared_displacement(const std::vector<Vec3>& now, const std::vector<Vec3>& start,

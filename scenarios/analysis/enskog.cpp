@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/contact_value.hpp"
+
 namespace carom {
 
 double contact_value(const std::vector<MixtureComponent>& mixture, std::size_t s, std::size_t t) {
@@ -11,10 +13,7 @@ double contact_value(const std::vector<MixtureComponent>& mixture, std::size_t s
     phi += std::numbers::pi / 6.0 * c.number_density * c.diameter * c.diameter * c.diameter;
     xi2 += std::numbers::pi / 6.0 * c.number_density * c.diameter * c.diameter;
   }
-  const double ds = mixture[s].diameter, dt = mixture[t].diameter;
-  const double D = ds * dt / (ds + dt);
-  const double empty = 1.0 - phi;
-  return 1.0 / empty + 3.0 * xi2 * D / (empty * empty) + 2.0 * xi2 * xi2 * D * D / (empty * empty * empty);
+  return bmcsl_contact_value(phi, xi2, mixture[s].diameter, mixture[t].diameter);
 }
 
 double enskog_frequency(const std::vector<MixtureComponent>& mixture, std::size_t s, std::size_t t, double temperature) {

@@ -6,12 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/nan.hpp"
 #include "scenarios/analysis/enskog.hpp"
 
 namespace carom {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
 double LocalFields::number_density(std::size_t cell, std::size_t species) const {

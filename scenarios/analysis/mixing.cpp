@@ -1,5 +1,6 @@
 #include "scenarios/analysis/mixing.hpp"
 
+#include "core/nan.hpp"
 #include "scenarios/analysis/log_least_squares.hpp"
 
 #include <algorithm>
@@ -12,8 +13,6 @@
 namespace carom {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void require_same_length(std::size_t a, std::size_t b, const char* what) {
   if (a != b)

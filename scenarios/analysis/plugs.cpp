@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,8 +11,6 @@
 namespace carom {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Mean and (population) standard deviation.
 void mean_std(const std::vector<double>& x, double& mean, double& sd) {
@@ -71,7 +70,7 @@ std::vector<double> axial_solid_fraction(const std::vector<double>& heights,
   for (std::size_t i = 0; i < heights.size(); ++i) {
     const double b = std::floor((heights[i] - bottom) / bin);
     if (!(b >= 0 && b < bins)) continue;
-    profile[static_cast<std::size_t>(b)] += 4.0 / 3.0 * kPi * radii[i] * radii[i] * radii[i];
+    profile[static_cast<std::size_t>(b)] += 4.0 / 3.0 * std::numbers::pi * radii[i] * radii[i] * radii[i];
   }
   for (double& v : profile) v /= area * bin;
   return profile;

@@ -1,6 +1,7 @@
 #include "scenarios/analysis/section_profiles.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -9,8 +10,6 @@
 namespace carom {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Offsets of the values of one bin in a row of sums.
 enum Value : std::size_t { kCount = 0, kSolid = 1, kVelocity = 2, kSquare = 5, kSpin = 8 };
@@ -37,7 +36,7 @@ std::vector<double> profile_sums(const ProfileGeometry& g, const std::vector<Vec
       if (!(offset >= -0.5 * g.thickness && offset < 0.5 * g.thickness)) continue;
       double* bin = row.data() + (k * B + b) * ProfileGeometry::kValuesPerBin;
       bin[kCount] += 1.0;
-      bin[kSolid] += 4.0 / 3.0 * kPi * radii[i] * radii[i] * radii[i];
+      bin[kSolid] += 4.0 / 3.0 * std::numbers::pi * radii[i] * radii[i] * radii[i];
       for (int c = 0; c < 3; ++c) {
         bin[kVelocity + c] += velocities[i][c];
         bin[kSquare + c] += velocities[i][c] * velocities[i][c];

@@ -26,11 +26,6 @@ std::string flag(bool b) {
 }
 
 /// A dataset name for an observable ('/' would make a path).
-std::string dataset_name(std::string name) {
-  std::replace(name.begin(), name.end(), '/', '_');
-  return name;
-}
-
 const char* measure_name(ErrorMeasure m) {
   return m == ErrorMeasure::Relative ? "relative" : "absolute";
 }

@@ -18,28 +18,6 @@ bool dotted_key(const std::string& key) {
          key.find_first_of(" \t\n") == std::string::npos;
 }
 
-std::vector<std::uint64_t> read_seeds(TableReader& chart, const toml::table& raw) {
-  const std::string allowed =
-      "(allowed: an array of at least two distinct integers >= 0, e.g. seeds = [1, 2, 3]; the "
-      "standard errors need two seeds)";
-  if (!chart.has("seeds")) chart.fail("seeds", "is missing " + allowed);
-  const auto* array = raw.get("seeds")->as_array();
-  if (array == nullptr) chart.fail("seeds", "is not an array " + allowed);
-  if (array->size() < 2) chart.fail("seeds", "holds fewer than two seeds " + allowed);
-  std::vector<std::uint64_t> seeds;
-  for (const toml::node& element : *array) {
-    const auto* i = element.as_integer();
-    if (i == nullptr || i->get() < 0)
-      chart.fail("seeds",
-                 "holds " + value_text(element) + ", which is not an integer >= 0 " + allowed);
-    const auto seed = static_cast<std::uint64_t>(i->get());
-    if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end())
-      chart.fail("seeds", "holds " + std::to_string(seed) + " twice " + allowed);
-    seeds.push_back(seed);
-  }
-  return seeds;
-}
-
 /// The changes of a `set` key (absent: none) of a table read by `reader`.
 void read_set(TableReader& reader, const toml::table& raw, std::vector<std::string>& out,
               std::vector<std::string>& origins) {
@@ -135,7 +113,13 @@ ChartSpec read_chart(const std::string& path) {
     chart->fail("scene", "names no scene file (looked for " + spec.scene + ")");
   spec.out = chart->string("out", fs::path(path).stem().string() + ".out");
   if (spec.out.empty()) chart->fail("out", "is empty (allowed: a directory path)");
-  spec.seeds = read_seeds(*chart, *raw);
+  {
+    const std::string allowed =
+        "(allowed: an array of at least two distinct integers >= 0, e.g. seeds = [1, 2, 3]; the "
+        "standard errors need two seeds)";
+    if (!chart->has("seeds")) chart->fail("seeds", "is missing " + allowed);
+    spec.seeds = read_seeds(*chart, *raw, 2, allowed);
+  }
   read_set(*chart, *raw, spec.fixed, spec.fixed_origins);
 
   std::vector<TableReader> observables = chart->tables("observable");

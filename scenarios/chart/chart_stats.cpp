@@ -3,11 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/nan.hpp"
+
 namespace carom {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool usable(const ChartPoint& p) {
   return std::isfinite(p.cost) && std::isfinite(p.error);

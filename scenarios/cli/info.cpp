@@ -19,7 +19,7 @@
 namespace carom {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::json;
+using InfoJson = nlohmann::json;
 
 namespace {
 
@@ -45,24 +45,24 @@ std::string species_text(const std::vector<std::string>& names, const std::vecto
 }
 
 /// summary.json beside the file, or null.
-Json read_summary(const std::string& path) {
+InfoJson read_summary(const std::string& path) {
   const fs::path summary = fs::path(path).parent_path() / "summary.json";
   std::ifstream in(summary);
-  if (!in) return Json();
+  if (!in) return InfoJson();
   try {
-    return Json::parse(in);
-  } catch (const Json::exception&) {
-    return Json();
+    return InfoJson::parse(in);
+  } catch (const InfoJson::exception&) {
+    return InfoJson();
   }
 }
 
 /// The number at `key` of a JSON object, NaN when absent or not a number.
-double number_at(const Json& object, const char* key) {
+double number_at(const InfoJson& object, const char* key) {
   return object.is_object() && object.contains(key) && object[key].is_number() ? object[key].get<double>() : NAN;
 }
 
 /// The headline numbers of summary.json.
-void print_summary(const Json& summary, std::ostream& out) {
+void print_summary(const InfoJson& summary, std::ostream& out) {
   out << "status (summary.json): " << summary.value("status", std::string("?"));
   const std::string message = summary.value("message", std::string());
   if (!message.empty()) out << ": " << message;
@@ -79,15 +79,15 @@ void print_summary(const Json& summary, std::ostream& out) {
     out << "\n";
   }
   if (!summary.contains("analysis") || !summary["analysis"].is_object()) return;
-  const Json& analysis = summary["analysis"];
+  const InfoJson& analysis = summary["analysis"];
   if (analysis.contains("mixing")) {
-    const Json& m = analysis["mixing"];
+    const InfoJson& m = analysis["mixing"];
     out << "  mixing of " << m.value("species", std::string("?")) << ": Lacey index "
         << display_number(number_at(m, "lacey_start")) << " -> " << display_number(number_at(m, "lacey_end"))
         << ", rate k = " << display_number(number_at(m, "rate")) << " 1/s\n";
   }
   if (analysis.contains("segregation_index")) {
-    const Json& s = analysis["segregation_index"];
+    const InfoJson& s = analysis["segregation_index"];
     out << "  segregation index " << display_number(number_at(s, "start")) << " -> " << display_number(number_at(s, "end"))
         << "\n";
   }
@@ -123,7 +123,7 @@ void print_run(const h5::File& file, const std::string& path, std::ostream& out)
     out << "gas: " << cells[0] << " x " << cells[1] << " x " << cells[2] << " cells, closure "
         << gas.read_string("closure") << "\n";
   }
-  const Json summary = read_summary(path);
+  const InfoJson summary = read_summary(path);
   if (summary.is_object()) {
     print_summary(summary, out);
     return;

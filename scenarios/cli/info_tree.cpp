@@ -85,7 +85,7 @@ herr_t print_attribute(hid_t location, const char* name, const H5A_info_t*, void
   return 0;
 }
 
-herr_t visit(hid_t root, const char* name, const H5O_info_t* info, void* data) {
+herr_t visit_object(hid_t root, const char* name, const H5O_info_t* info, void* data) {
   auto* state = static_cast<WalkState*>(data);
   std::ostream& out = *state->out;
   const std::string path = name;
@@ -147,7 +147,7 @@ void print_file_tree(const std::string& path, std::ostream& out) {
   out << path << " (" << std::filesystem::file_size(path) << " bytes)\n";
   hsize_t index = 0;
   H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &index, print_attribute, &state);
-  const herr_t status = H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, visit, &state, H5O_INFO_BASIC);
+  const herr_t status = H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, visit_object, &state, H5O_INFO_BASIC);
   if (status < 0) throw std::runtime_error(path + ": cannot read the file's structure");
   if (state.snapshots > 1)
     out << "  (" << state.snapshots - 1 << " more snapshots like /snapshots/" << state.first_snapshot << ")\n";

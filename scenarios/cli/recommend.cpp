@@ -8,7 +8,9 @@
 #include <sstream>
 #include <utility>
 
+#include "core/contact_value.hpp"
 #include "core/display_number.hpp"
+#include "events/soft_sphere/contact_model.hpp"
 #include "fluid/drag.hpp"
 #include "scenarios/cli/chart_evidence.hpp"
 
@@ -21,22 +23,13 @@ std::string num(double x) { return display_number(x); }
 
 /// Carnahan-Starling contact value, the packing capped at 0.6 (a frozen packing has no mean free
 /// time to speak of; the cap keeps the estimate finite).
-double contact_value(double phi) {
-  const double p = std::min(phi, 0.6);
-  return (1.0 - p / 2.0) / std::pow(1.0 - p, 3);
-}
+double capped_contact_value(double phi) { return carnahan_starling_contact_value(std::min(phi, 0.6)); }
 
-/// Hertz peak overlap of two equal elastic spheres of the species meeting at approach speed v,
-/// m: delta_max = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5).
-double hertz_peak_overlap(const Species& s, const ElasticMaterial& m, double v) {
-  const double e_star = m.young_modulus / (2.0 * (1.0 - m.poisson_ratio * m.poisson_ratio));
-  const double r_star = s.radius() / 2.0, m_star = s.mass() / 2.0;
-  return std::pow(15.0 * m_star * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
-}
-
-/// Hertz contact time of two equal spheres of the species at approach speed v, s.
-double hertz_contact_time(const Species& s, const ElasticMaterial& m, double v) {
-  return 2.9432752 * hertz_peak_overlap(s, m, v) / v;  // tests/VALIDATION.md, "Soft-sphere contacts"
+/// The elastic Hertz contact of two equal spheres of the species: the soft-sphere method's own
+/// (events/soft_sphere/contact_model.hpp), whose peak_overlap(v) and contact_time(v) give the
+/// undamped impact at approach speed v.
+PairContact hertz_pair(const Species& s, const ElasticMaterial& m) {
+  return make_pair_contact(s.radius(), s.mass(), m, s.radius(), s.mass(), m, 1.0, 0.0, SoftSphereOptions{});
 }
 
 /// The solid fraction around a typical particle: the domain cut into cells of about `edge`
@@ -238,7 +231,7 @@ SceneNumbers scene_numbers(const Scene& scene, bool settling_skipped) {
     const double number_density =
         6.0 * n.solid_fraction_seen / (std::numbers::pi * std::pow(sauter, 3));
     const double omega = 4.0 * number_density * sauter * sauter *
-                         contact_value(n.solid_fraction_seen) * std::sqrt(std::numbers::pi / 3.0) *
+                         capped_contact_value(n.solid_fraction_seen) * std::sqrt(std::numbers::pi / 3.0) *
                          n.speed;
     n.mean_free_time = 1.0 / omega;
   }
@@ -250,9 +243,9 @@ SceneNumbers scene_numbers(const Scene& scene, bool settling_skipped) {
     if (system.species[s].diameter > system.species[largest].diameter) largest = s;
   // (The TC model's contact_time is a numerical remedy, not the beads' contact: not used.)
   if (largest < materials.size() && materials[largest].young_modulus > 0 && n.speed > 0) {
-    n.contact_time = hertz_contact_time(system.species[largest], materials[largest], n.speed);
-    n.peak_overlap = hertz_peak_overlap(system.species[largest], materials[largest], n.speed) /
-                     system.species[largest].radius();
+    const PairContact hertz = hertz_pair(system.species[largest], materials[largest]);
+    n.contact_time = hertz.contact_time(n.speed);
+    n.peak_overlap = hertz.peak_overlap(n.speed) / system.species[largest].radius();
     n.contact_source = "Hertz for two " + system.species[largest].name + " at the speed scale, from young_modulus = " +
                        num(materials[largest].young_modulus) + " Pa";
     n.young_modulus = materials[largest].young_modulus;

@@ -118,7 +118,7 @@ void hash_attributes(Walk& walk, hid_t object, const std::string& path) {
   }
 }
 
-herr_t visit(hid_t root, const char* name, const H5O_info_t* info, void* data) {
+herr_t hash_object(hid_t root, const char* name, const H5O_info_t* info, void* data) {
   auto& walk = *static_cast<Walk*>(data);
   try {
     const std::string path = std::string(name) == "." ? "/" : "/" + std::string(name);
@@ -146,7 +146,7 @@ herr_t visit(hid_t root, const char* name, const H5O_info_t* info, void* data) {
 std::uint64_t file_checksum(const h5::File& file) {
   Walk walk;
   walk.file = file.file_path();
-  const herr_t status = H5Ovisit2(file.id(), H5_INDEX_NAME, H5_ITER_INC, visit, &walk, H5O_INFO_BASIC);
+  const herr_t status = H5Ovisit2(file.id(), H5_INDEX_NAME, H5_ITER_INC, hash_object, &walk, H5O_INFO_BASIC);
   if (walk.failed) throw std::runtime_error(walk.error);
   if (status < 0) fail(walk.file, "cannot walk the file's objects for its checksum (damaged HDF5 structure)");
   return walk.hash.value();

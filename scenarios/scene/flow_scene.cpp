@@ -13,7 +13,7 @@ int read_axis(TableReader& t) {
   return axis == "x" ? 0 : axis == "y" ? 1 : 2;
 }
 
-int read_side(TableReader& t, const std::string& meaning) {
+int read_plane_side(TableReader& t, const std::string& meaning) {
   if (!t.has("side")) t.fail("side", "is missing (" + meaning + "; allowed: \"above\", \"below\")");
   return t.required_string("side", {"above", "below"}) == "above" ? 1 : -1;
 }
@@ -69,7 +69,7 @@ void read_flow(TableReader& root, Scene& scene) {
     out.name = read_name(t, "outflow", k, names);
     out.axis = read_axis(t);
     out.plane = t.number("plane", Range::any("position of the outlet plane on its axis, m"));
-    out.direction = read_side(t, "which centres leave: those above or below the plane");
+    out.direction = read_plane_side(t, "which centres leave: those above or below the plane");
     if (auto problem = check_outflow(out, domain)) fail_at(t, *problem);
     t.finish();
     names.push_back(out.name);
@@ -84,7 +84,7 @@ void read_flow(TableReader& root, Scene& scene) {
     in.species = species_index(t, "species", scene);
     in.axis = read_axis(t);
     in.plane = t.number("plane", Range::any("position of the inlet plane on its axis, m"));
-    in.direction = read_side(t, "the side of the plane the slab of entering particles lies on");
+    in.direction = read_plane_side(t, "the side of the plane the slab of entering particles lies on");
     in.lower = t.required_vector3(
         "min", Range::any("lower corner of the inlet rectangle, m (the plane's axis is ignored)"));
     in.upper = t.required_vector3(

@@ -21,11 +21,6 @@ std::string number_cell(double x) {
 }
 
 /// A dataset name for a column ('/' would make a path).
-std::string dataset_name(std::string name) {
-  std::replace(name.begin(), name.end(), '/', '_');
-  return name;
-}
-
 std::string cases_csv(const SweepSpec& spec, const SweepTable& table) {
   std::ostringstream csv;
   csv << "case,group";
@@ -156,6 +151,11 @@ void write_h5(const std::string& path, const SweepSpec& spec, const SweepTable& 
 }
 
 }  // namespace
+
+std::string dataset_name(std::string key) {
+  std::replace(key.begin(), key.end(), '/', '_');
+  return key;
+}
 
 std::string csv_cell(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;

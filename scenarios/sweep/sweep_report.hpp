@@ -20,4 +20,7 @@ void write_sweep_summary(const SweepSpec& spec, const SweepTable& table);
 /// One CSV cell: the text, quoted when it holds a comma, a quote or a line break.
 std::string csv_cell(const std::string& text);
 
+/// A key as an HDF5 dataset name: '/' (a group separator there) becomes '_'.
+std::string dataset_name(std::string key);
+
 }  // namespace carom

@@ -84,27 +84,6 @@ void flatten_set(const toml::table& table, const std::string& prefix, const Tabl
   }
 }
 
-std::vector<std::uint64_t> read_seeds(TableReader& sweep, const toml::table& raw) {
-  std::vector<std::uint64_t> seeds;
-  if (!sweep.has("seeds")) return seeds;
-  const auto* array = raw.get("seeds")->as_array();
-  const std::string allowed =
-      "(allowed: a non-empty array of distinct integers >= 0, e.g. seeds = [1, 2, 3])";
-  if (array == nullptr) sweep.fail("seeds", "is not an array " + allowed);
-  if (array->empty()) sweep.fail("seeds", "is empty " + allowed);
-  for (const toml::node& element : *array) {
-    const auto* i = element.as_integer();
-    if (i == nullptr || i->get() < 0)
-      sweep.fail("seeds",
-                 "holds " + value_text(element) + ", which is not an integer >= 0 " + allowed);
-    const auto seed = static_cast<std::uint64_t>(i->get());
-    if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end())
-      sweep.fail("seeds", "holds " + std::to_string(seed) + " twice " + allowed);
-    seeds.push_back(seed);
-  }
-  return seeds;
-}
-
 SweepAxis read_axis(TableReader& vary, const toml::table& raw) {
   SweepAxis axis;
   vary.allow({"key", "values"});
@@ -236,7 +215,8 @@ SweepSpec read_sweep(const std::string& path) {
     sweep->fail("scene", "names no file (looked for " + spec.scene + ")");
   spec.out = sweep->string("out", fs::path(path).stem().string() + ".out");
   if (spec.out.empty()) sweep->fail("out", "is empty (allowed: a directory path)");
-  spec.seeds = read_seeds(*sweep, *raw);
+  spec.seeds = read_seeds(*sweep, *raw, 1,
+                          "(allowed: a non-empty array of distinct integers >= 0, e.g. seeds = [1, 2, 3])");
 
   if (sweep->has("set")) {
     const auto* set = raw->get("set")->as_table();
@@ -259,6 +239,28 @@ SweepSpec read_sweep(const std::string& path) {
   }
   sweep->finish();
   return spec;
+}
+
+std::vector<std::uint64_t> read_seeds(TableReader& t, const toml::table& raw, std::size_t minimum,
+                                      const std::string& allowed) {
+  std::vector<std::uint64_t> seeds;
+  if (!t.has("seeds")) return seeds;
+  const auto* array = raw.get("seeds")->as_array();
+  if (array == nullptr) t.fail("seeds", "is not an array " + allowed);
+  if (array->size() < minimum)
+    t.fail("seeds", (array->empty() ? std::string("is empty ")
+                                    : "holds fewer than " + std::to_string(minimum) + " seeds ") +
+                        allowed);
+  for (const toml::node& element : *array) {
+    const auto* i = element.as_integer();
+    if (i == nullptr || i->get() < 0)
+      t.fail("seeds", "holds " + value_text(element) + ", which is not an integer >= 0 " + allowed);
+    const auto seed = static_cast<std::uint64_t>(i->get());
+    if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end())
+      t.fail("seeds", "holds " + std::to_string(seed) + " twice " + allowed);
+    seeds.push_back(seed);
+  }
+  return seeds;
 }
 
 }  // namespace carom

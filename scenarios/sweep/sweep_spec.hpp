@@ -3,9 +3,9 @@
 ///
 ///   [sweep]
 ///   scene = "fines_bed.toml"          # relative to the sweep file's folder
-///   out = "fines_sweep.out"           # default: the sweep file's stem + ".out" (current
-///   directory) seeds = [1, 2]                    # default: the scene's own initial.seed set = {
-///   "time.end" = 1.0 }        # fixed changes for every case (dotted keys, as --set)
+///   out = "fines_sweep.out"           # default: the sweep file's stem + ".out" (current directory)
+///   seeds = [1, 2]                    # default: the scene's own initial.seed
+///   set = { "time.end" = 1.0 }        # fixed changes for every case (dotted keys, as --set)
 ///   [[sweep.vary]]
 ///   key = "species.fines.diameter"
 ///   values = [3.3e-4, 2.5e-4]
@@ -80,6 +80,12 @@ struct SweepSpec {
 void flatten_scene_changes(const toml::table& table, const TableReader& reader,
                            const std::string& name, std::vector<std::string>& out,
                            std::vector<std::string>& origins);
+
+/// The `seeds` array of table `t` (`raw`: the same table): distinct integers >= 0, at least
+/// `minimum` of them; `allowed` ends each error (what the key takes, with an example). Empty
+/// when the key is missing. Throws SceneError naming the file, line and key.
+std::vector<std::uint64_t> read_seeds(TableReader& t, const toml::table& raw, std::size_t minimum,
+                                      const std::string& allowed);
 
 /// Reads and checks a sweep file. Throws SceneError for anything wrong in it.
 SweepSpec read_sweep(const std::string& path);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/nan.hpp"
+#include "fluid/overlap.hpp"
 #include "scenarios/scene/scene.hpp"
 
 namespace carom {
@@ -108,6 +109,11 @@ BedGeometry bed_geometry(const Scene& scene) {
   g.map_upper = system.domain.upper[g.map_axis];
   g.slab_centre = s.map_centre;
   g.slab_thickness = s.map_thickness;
+  for (int k = 0; k < 3; ++k) {
+    g.lower[k] = system.domain.lower[k];
+    g.upper[k] = system.domain.upper[k];
+    g.periodic[k] = system.domain.periodic[k];
+  }
   return g;
 }
 
@@ -197,20 +203,51 @@ std::vector<double> map_sums(const BedGeometry& g, const std::vector<Vec3>& posi
                              const std::vector<double>& masses) {
   std::vector<double> row(g.map_width(), 0.0);
   const int across = g.map_axis, depth = g.depth_axis(), up = g.vertical;
-  const double width = (g.map_upper - g.map_lower) / g.map_bins[0], height = g.extent / g.map_bins[1];
+  const int columns = g.map_bins[0], rows = g.map_bins[1];
+  const double width = (g.map_upper - g.map_lower) / columns, height = g.extent / rows;
   const double slab_low = g.slab_centre - 0.5 * g.slab_thickness;
+  const double slab_high = slab_low + g.slab_thickness;
+  // The shifts to a bead's periodic images along an axis that it reaches across.
+  const auto images = [&](int axis, double x, double a) {
+    std::vector<double> shifts{0.0};
+    if (!g.periodic[axis]) return shifts;
+    const double length = g.upper[axis] - g.lower[axis];
+    if (x - a < g.lower[axis]) shifts.push_back(length);
+    if (x + a > g.upper[axis]) shifts.push_back(-length);
+    return shifts;
+  };
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Vec3& r = positions[i];
-    if (!(r[depth] >= slab_low && r[depth] < slab_low + g.slab_thickness)) continue;
-    const double c = std::floor((r[across] - g.map_lower) / width);
-    const double u = std::floor((r[up] - g.floor) / height);
-    if (!(c >= 0 && c < g.map_bins[0] && u >= 0 && u < g.map_bins[1])) continue;
-    double* bin = &row[(static_cast<std::size_t>(u) * static_cast<std::size_t>(g.map_bins[0]) +
-                        static_cast<std::size_t>(c)) * BedGeometry::kMapValues];
-    bin[0] += 4.0 / 3.0 * std::numbers::pi * radii[i] * radii[i] * radii[i];
-    bin[1] += masses[i];
-    bin[2] += masses[i] * velocities[i][across];
-    bin[3] += masses[i] * velocities[i][up];
+    const double a = radii[i], sphere = 4.0 / 3.0 * std::numbers::pi * a * a * a;
+    for (double shift_across : images(across, positions[i][across], a))
+      for (double shift_depth : images(depth, positions[i][depth], a)) {
+        Vec3 c = positions[i];
+        c[across] += shift_across;
+        c[depth] += shift_depth;
+        if (c[depth] + a <= slab_low || c[depth] - a >= slab_high) continue;
+        const int c0 = std::max(0, static_cast<int>(std::floor((c[across] - a - g.map_lower) / width)));
+        const int c1 = std::min(columns - 1, static_cast<int>(std::floor((c[across] + a - g.map_lower) / width)));
+        const int u0 = std::max(0, static_cast<int>(std::floor((c[up] - a - g.floor) / height)));
+        const int u1 = std::min(rows - 1, static_cast<int>(std::floor((c[up] + a - g.floor) / height)));
+        for (int u = u0; u <= u1; ++u)
+          for (int b = c0; b <= c1; ++b) {
+            Vec3 low, high;
+            low[across] = g.map_lower + b * width;
+            high[across] = g.map_lower + (b + 1) * width;
+            low[up] = g.floor + u * height;
+            high[up] = g.floor + (u + 1) * height;
+            low[depth] = slab_low;
+            high[depth] = slab_high;
+            const double volume = sphere_box_volume(c, a, low, high);
+            if (!(volume > 0.0)) continue;
+            const double share = masses[i] * volume / sphere;
+            double* bin = &row[(static_cast<std::size_t>(u) * static_cast<std::size_t>(columns) +
+                                static_cast<std::size_t>(b)) * BedGeometry::kMapValues];
+            bin[0] += volume;
+            bin[1] += share;
+            bin[2] += share * velocities[i][across];
+            bin[3] += share * velocities[i][up];
+          }
+      }
   }
   return row;
 }

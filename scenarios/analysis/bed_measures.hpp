@@ -19,9 +19,11 @@
 ///                       (trilinear between gas-cell centres, the outermost centres' values
 ///                       beyond them), then at each probe height (the open-volume-weighted mean
 ///                       over the gas cells of a layer, linear between layer centres)
-///   bed_map_sums        U x C x 4 (U bins up, C across; up-major): the beads whose centres lie
-///                       in the mid-plane slab, binned by centre: per bin their volume (m^3),
-///                       mass (kg) and momentum across and up (kg m/s)
+///   bed_map_sums        U x C x 4 (U bins up, C across; up-major): per bin of the mid-plane slab
+///                       the beads' volume (m^3), mass (kg) and momentum across and up (kg m/s),
+///                       each bead's shared by the exact part of its volume in the bin
+///                       (fluid/overlap.hpp; periodic images included), so the maps are smooth
+///                       where bins are a few diameters and hold the whole solid volume
 /// The gas series are NaN before the first fluid step. The conclusions use the samples at or
 /// after `start` (s):
 ///   heights     mean, standard deviation, minimum and maximum of each bed_height column
@@ -73,6 +75,8 @@ struct BedGeometry {
   double map_lower = 0, map_upper = 0;  ///< Extent of the maps across, m (up: the floor to the top).
   double slab_centre = 0;            ///< Slab centre along the third axis, m.
   double slab_thickness = 0;         ///< Slab thickness along the third axis, m.
+  std::array<double, 3> lower{}, upper{};  ///< The domain, m.
+  std::array<bool, 3> periodic{};          ///< Its periodic axes.
 
   int depth_axis() const { return 3 - vertical - map_axis; }
   std::size_t height_width() const { return shares.size() + 1; }

@@ -57,6 +57,7 @@ void write_bed_setup(const h5::Group& analysis, const BedGeometry& g) {
   const h5::Group bed = analysis.create_group("bed");
   bed.set_attribute("vertical_axis", static_cast<std::int64_t>(g.vertical));
   attribute_with_unit(bed, "floor", g.floor, "m");
+  attribute_with_unit(bed, "extent", g.extent, "m");
   attribute_with_unit(bed, "area", g.area, "m^2");
   attribute_with_unit(bed, "threshold", g.threshold, "1");
   attribute_with_unit(bed, "bin", g.bin, "m");

@@ -25,7 +25,10 @@ Writes, as 150 dpi PNGs named after the run file:
   RUN_gas_field.png        runs with a gas: porosity and gas velocity of the snapshot;
   RUN_flow.png             runs with inflow or outflow: mass in and out against the set rates,
                            particles present (flow_plots.py);
-  RUN_mixing.png, RUN_collisions.png   the run's analysis (analysis_plots.py).
+  RUN_mixing.png, RUN_collisions.png   the run's analysis (analysis_plots.py);
+  RUN_bed.png, RUN_bed_spectrum.png, RUN_bed_map.png   runs with [analysis.bed]: bed heights and
+                           pressures against time, the probes' spectra, the mid-plane maps
+                           (bed_plots.py).
 Every figure colours a species alike (style.py: by its index in /species).
 
 Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
@@ -55,6 +58,7 @@ from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analysis_plots import analysis_figures  # noqa: E402
+from bed_plots import bed_figures  # noqa: E402
 from carom_reader import OutputError, open_run  # noqa: E402
 from flow_plots import plot_flow  # noqa: E402
 from wall_outlines import WALL_STYLE, draw_walls  # noqa: E402
@@ -591,6 +595,7 @@ def main(argv=None):
                         ("gas_field", lambda p: plot_gas_field(run, p, args.snapshot))]
         figures += [(name, lambda p, draw=draw: draw(p, DPI))
                     for name, draw in analysis_figures(run, args.run)]
+        figures += [(name, lambda p, draw=draw: draw(p, DPI)) for name, draw in bed_figures(run)]
         for name, draw in figures:
             path = os.path.join(out, f"{stem}_{name}.png")
             draw(path)

@@ -101,9 +101,11 @@ TEST(BedPressure, ProbesInterpolateALinearFieldExactly) {
   EXPECT_NEAR(pressure_at_level(p, open, cells, lower, size, 2, 19.9e-3), field(mean_x, 18e-3), 1e-12);
 }
 
-TEST(BedMaps, BeadsInTheSlabAreBinnedByCentre) {
+TEST(BedMaps, BeadsAreSharedOverBinsAndTheSlabByVolume) {
   // A 4 x 2 x 6 mm domain, maps across x (2 bins of 2 mm) and up z (3 bins of 2 mm) in a slab
-  // 1 mm thick about y = 1 mm. Bead 3 lies outside the slab; bead 4 above the domain.
+  // 1 mm thick about y = 1 mm. Beads 0-2 lie wholly inside a bin and the slab; bead 3 is
+  // centred on the face x = 2 mm (half in each of two bins, by symmetry); bead 4 on the slab's
+  // face y = 1.5 mm (half inside); bead 5 outside the slab, bead 6 above the domain.
   BedGeometry g;
   g.vertical = 2;
   g.floor = 0;
@@ -115,31 +117,48 @@ TEST(BedMaps, BeadsInTheSlabAreBinnedByCentre) {
   g.map_upper = 4e-3;
   g.slab_centre = 1e-3;
   g.slab_thickness = 1e-3;
-  const std::vector<Vec3> r{{0.5e-3, 1.0e-3, 0.5e-3}, {3.0e-3, 0.6e-3, 5.0e-3},
-                            {3.5e-3, 1.4e-3, 5.5e-3}, {1.0e-3, 1.8e-3, 1.0e-3},
+  g.lower = {0, 0, 0};
+  g.upper = {4e-3, 2e-3, 6e-3};
+  const std::vector<Vec3> r{{0.5e-3, 1.0e-3, 0.5e-3}, {3.0e-3, 0.8e-3, 5.0e-3},
+                            {3.5e-3, 1.2e-3, 5.5e-3}, {2.0e-3, 1.0e-3, 3.0e-3},
+                            {1.0e-3, 1.5e-3, 3.0e-3}, {1.0e-3, 1.8e-3, 1.0e-3},
                             {1.0e-3, 1.0e-3, 7.0e-3}};
-  const std::vector<Vec3> v{{1, 0, 2}, {0, 0, -1}, {-2, 0, -3}, {5, 5, 5}, {5, 5, 5}};
-  const std::vector<double> radius(5, 0.25e-3), mass{1e-6, 2e-6, 3e-6, 4e-6, 5e-6};
+  const std::vector<Vec3> v{{1, 0, 2}, {0, 0, -1}, {-2, 0, -3}, {4, 0, 8}, {-1, 0, 1}, {5, 5, 5}, {5, 5, 5}};
+  const std::vector<double> radius(7, 0.25e-3), mass{1e-6, 2e-6, 3e-6, 4e-6, 6e-6, 5e-6, 5e-6};
   const std::vector<double> row = map_sums(g, r, v, radius, mass);
   ASSERT_EQ(row.size(), 2u * 3u * 4u);
   const double vol = 4.0 / 3.0 * kPi * 0.25e-3 * 0.25e-3 * 0.25e-3;
   const auto at = [&](int up, int across, int k) { return row[(up * 2 + across) * 4 + k]; };
-  EXPECT_DOUBLE_EQ(at(0, 0, 0), vol);
-  EXPECT_DOUBLE_EQ(at(0, 0, 1), 1e-6);
-  EXPECT_DOUBLE_EQ(at(0, 0, 2), 1e-6);
-  EXPECT_DOUBLE_EQ(at(0, 0, 3), 2e-6);
-  EXPECT_DOUBLE_EQ(at(2, 1, 0), 2 * vol);
-  EXPECT_DOUBLE_EQ(at(2, 1, 1), 5e-6);
-  EXPECT_DOUBLE_EQ(at(2, 1, 2), -6e-6);
-  EXPECT_DOUBLE_EQ(at(2, 1, 3), -2e-6 - 9e-6);
-  // Nothing else anywhere: the sums over every bin are those of beads 0, 1 and 2.
-  double volume = 0.0, mass_in = 0.0;
-  for (std::size_t b = 0; b < 6; ++b) {
-    volume += row[4 * b];
-    mass_in += row[4 * b + 1];
-  }
-  EXPECT_DOUBLE_EQ(volume, 3 * vol);
-  EXPECT_DOUBLE_EQ(mass_in, 6e-6);
+  // Whole beads: to round-off of the closed-form overlap (1e-15 of a sphere, tolerance 1e-12).
+  EXPECT_NEAR(at(0, 0, 0) / vol, 1.0, 1e-12);
+  EXPECT_NEAR(at(0, 0, 1), 1e-6, 1e-18);
+  EXPECT_NEAR(at(0, 0, 2), 1e-6, 1e-18);
+  EXPECT_NEAR(at(0, 0, 3), 2e-6, 1e-18);
+  EXPECT_NEAR(at(2, 1, 0) / vol, 2.0, 1e-12);
+  EXPECT_NEAR(at(2, 1, 1), 5e-6, 1e-18);
+  EXPECT_NEAR(at(2, 1, 2), -6e-6, 1e-18);
+  EXPECT_NEAR(at(2, 1, 3), -2e-6 - 9e-6, 1e-18);
+  // Bead 3 halved across x = 2 mm, bead 4 halved by the slab face (both in the middle row).
+  EXPECT_NEAR(at(1, 1, 0) / vol, 0.5, 1e-12);
+  EXPECT_NEAR(at(1, 1, 3), 0.5 * 4e-6 * 8, 1e-17);
+  EXPECT_NEAR(at(1, 0, 0) / vol, 1.0, 1e-12);
+  EXPECT_NEAR(at(1, 0, 1), 0.5 * 4e-6 + 0.5 * 6e-6, 1e-17);
+  EXPECT_NEAR(at(1, 0, 2), 0.5 * 4e-6 * 4 - 0.5 * 6e-6, 1e-17);
+  // Nothing else anywhere: the volume over every bin is four and a half beads'.
+  double volume = 0.0;
+  for (std::size_t b = 0; b < 6; ++b) volume += row[4 * b];
+  EXPECT_NEAR(volume / vol, 4.5, 1e-12);
+  // A periodic depth: the slab covers the whole depth, and a bead across its face y = 0 is
+  // counted whole through its image.
+  g.periodic = {false, true, false};
+  g.slab_centre = 1e-3;
+  g.slab_thickness = 2e-3;
+  const std::vector<double> wrapped = map_sums(g, {{1e-3, 0.1e-3, 1e-3}}, {{0, 0, 0}}, {0.25e-3}, {1e-6});
+  EXPECT_NEAR(wrapped[0] / vol, 1.0, 1e-12);
+  g.periodic = {false, false, false};
+  EXPECT_LT(map_sums(g, {{1e-3, 0.1e-3, 1e-3}}, {{0, 0, 0}}, {0.25e-3}, {1e-6})[0] / vol, 0.9);
+  g.slab_centre = 1e-3;
+  g.slab_thickness = 1e-3;
 
   // Two samples (the second with every sum doubled) averaged: solid fraction sum V / (2 V_bin),
   // velocity sum m v / sum m, flux sum m v / (2 V_bin); a bin no bead visited has no velocity.
@@ -148,11 +167,11 @@ TEST(BedMaps, BeadsInTheSlabAreBinnedByCentre) {
   const std::vector<double> heights{1e-3, 2e-3, 3e-3, 4e-3};
   const BedConclusions c = conclude_bed(g, {0.0, 0.1}, heights, {}, {}, map);
   const double bin = 2e-3 * 2e-3 * 1e-3;
-  EXPECT_DOUBLE_EQ(c.solid_fraction[0], 3 * vol / (2 * bin));
-  EXPECT_DOUBLE_EQ(c.velocity[0], 1.0);
-  EXPECT_DOUBLE_EQ(c.velocity[1], 2.0);
-  EXPECT_DOUBLE_EQ(c.flux[2 * 5 + 1], 3 * -11e-6 / (2 * bin));
-  EXPECT_TRUE(std::isnan(c.velocity[2 * 1]));
+  EXPECT_DOUBLE_EQ(c.solid_fraction[0], 3 * row[0] / (2 * bin));
+  EXPECT_DOUBLE_EQ(c.velocity[0], row[2] / row[1]);
+  EXPECT_DOUBLE_EQ(c.velocity[1], row[3] / row[1]);
+  EXPECT_DOUBLE_EQ(c.flux[2 * 5 + 1], 3 * row[4 * 5 + 3] / (2 * bin));
+  EXPECT_TRUE(std::isnan(c.velocity[2 * 1]));  // bottom right: no bead
   EXPECT_EQ(c.flux[2 * 1], 0.0);
   // The heights over both samples.
   EXPECT_DOUBLE_EQ(c.heights[0].mean, 2e-3);

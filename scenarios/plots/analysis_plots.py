@@ -16,11 +16,9 @@
                    standard deviation, and the mean spin about the third axis.
   RUN_plugs.png    (runs with [analysis.plugs]) the axial solid fraction as a space-time
                    diagram and the bed top against time (plug_plots.py).
-The fitted numbers come from summary.json beside the run file (its "analysis" object).
+The fitted numbers come from summary.json beside the run file (its "analysis" object); the run
+file and summary.json are read through carom.open (carom_reader.py).
 """
-import json
-import os
-
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.collections import EllipseCollection
@@ -42,30 +40,27 @@ def tag_colours(mixing_species):
     return style.shade(colour, TAGGED_SHADE), style.shade(colour, UNTAGGED_SHADE)
 
 
-def _text(value):
-    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
-
-
-def read_summary(run_path):
-    path = os.path.join(os.path.dirname(os.path.abspath(run_path)), "summary.json")
+def read_summary(run):
+    """summary.json's "analysis" object beside the run file; {} without a readable one (the
+    figures then show the measured data without the fits)."""
     try:
-        with open(path) as f:
-            return json.load(f).get("analysis", {})
+        return run.analysis or {}
     except (OSError, ValueError):
         return {}
 
 
-def _side_view(ax, run, snapshot, tagged, mixing_species, vertical, top):
+def _side_view(ax, domain, snapshot, lower_ids, mixing_species, vertical, top):
+    """One side view of `snapshot` (carom.Output.particles); `lower_ids`: the ids of the
+    particles in the lower half at t = 0."""
     across = 0 if vertical != 0 else 1
     depth = 3 - across - vertical
-    lower, upper = run["domain/lower"][()], run["domain/upper"][()]
-    position = snapshot["position"][()]
-    radius = snapshot["radius"][()]
-    species = snapshot["species"][()]
-    ids = snapshot["id"][()]
-    tag_ids = run["analysis/id"][()]
+    lower, upper = domain["lower"], domain["upper"]
+    position = snapshot["position"]
+    radius = snapshot["radius"]
+    species = snapshot["species"]
+    ids = snapshot["id"]
     tag = np.zeros(len(ids), dtype=int)
-    tag[np.isin(ids, tag_ids[tagged != 0])] = 1
+    tag[np.isin(ids, lower_ids)] = 1
     order = np.argsort(position[:, depth])
     lower_half, upper_half = tag_colours(mixing_species)
     colours = []
@@ -87,7 +82,7 @@ def _side_view(ax, run, snapshot, tagged, mixing_species, vertical, top):
     height = (min(upper[vertical], top) - lower[vertical]) * 1e3
     ax.set_xlabel(f"{'xyz'[across]}: {width:.3g} mm wide", fontsize=8)
     ax.set_ylabel(f"{'xyz'[vertical]}: {height:.3g} mm shown", fontsize=8)
-    ax.set_title(f"$t$ = {snapshot.attrs['time']:.3g} s", fontsize=9)
+    ax.set_title(f"$t$ = {snapshot['time']:.3g} s", fontsize=9)
 
 
 def confined_msd(t, d, saturation, terms=2001):
@@ -128,17 +123,17 @@ def time_staying_above_08(t, lacey):
     return float(t[k - 1] + (0.8 - lacey[k - 1]) / (lacey[k] - lacey[k - 1]) * (t[k] - t[k - 1]))
 
 
-def plot_mixing(run, run_path, path, dpi):
-    analysis = read_summary(run_path)
+def plot_mixing(run, path, dpi):
+    analysis = read_summary(run)
     mixing = analysis.get("mixing", {})
     dispersion = analysis.get("dispersion", {})
-    series = run["timeseries"]
-    t = series["time"][()]
-    lacey = series["lacey_index"][()]
-    msd = series["axial_msd"][()]
-    mixing_species = int(run["analysis"].attrs["mixing_species"])
-    vertical = int(run["analysis"].attrs["vertical_axis"])
-    names = [_text(n) for n in run["species/name"][()]]
+    t = run.series("time").values
+    lacey = run.series("lacey_index").values
+    msd = run.series("axial_msd").values
+    setup = run.analysis_data()
+    mixing_species = int(setup["mixing_species"])
+    vertical = int(setup["vertical_axis"])
+    names = run.species_names
 
     fig = plt.figure(figsize=(11, 4.4))
     grid = fig.add_gridspec(1, 4, width_ratios=[1.3, 1.3, 0.6, 0.6], wspace=0.45)
@@ -196,22 +191,22 @@ def plot_mixing(run, run_path, path, dpi):
     ax.set_title(f"vertical dispersion of {names[mixing_species]}", fontsize=9)
     ax.legend(loc="upper left", bbox_to_anchor=(-0.1, -0.14), fontsize=8)
 
-    snapshots = sorted(run["snapshots"].keys())
-    tagged = run["analysis/tagged"][()]
-    shown = [run["snapshots"][snapshots[0]], run["snapshots"][snapshots[-1]]]
+    lower_ids = setup["id"][setup["tagged"] != 0]
+    shown = [run.particles(index=0), run.particles(index=-1)]
     # One height for both views: the highest bead of the mixing species plus a margin.
-    top = max(np.percentile(s["position"][()][s["species"][()] == mixing_species, vertical], 99.5)
-              for s in shown) + 4 * max(s["radius"][()].max() for s in shown)
+    top = max(np.percentile(s["position"][s["species"] == mixing_species, vertical], 99.5)
+              for s in shown) + 4 * max(s["radius"].max() for s in shown)
     views = []
+    domain = run.domain
     for column, snapshot in zip((2, 3), shown):
         views.append(fig.add_subplot(grid[column]))
-        _side_view(views[-1], run, snapshot, tagged, mixing_species, vertical, top)
+        _side_view(views[-1], domain, snapshot, lower_ids, mixing_species, vertical, top)
     lower_half, upper_half = tag_colours(mixing_species)
     handles = [Patch(facecolor=lower_half, edgecolor="black", lw=0.3,
                      label=f"{names[mixing_species]}, lower half at $t$ = 0"),
                Patch(facecolor=upper_half, edgecolor="black", lw=0.3,
                      label=f"{names[mixing_species]}, upper half at $t$ = 0")]
-    present = set(np.unique(np.concatenate([s["species"][()] for s in shown])))
+    present = set(np.unique(np.concatenate([s["species"] for s in shown])))
     handles += [Patch(facecolor=style.shade(style.species_colour(k), OTHER_SHADE),
                       edgecolor="black", lw=0.3, label=name)
                 for k, name in enumerate(names) if k != mixing_species and k in present]
@@ -227,21 +222,22 @@ def wide_range(values, ratio=20.0):
     return len(positive) > 0 and positive.max() > ratio * positive.min()
 
 
-def plot_collisions(run, run_path, path, dpi):
-    analysis = read_summary(run_path)
-    names = [_text(n) for n in run["species/name"][()]]
+def plot_collisions(run, path, dpi):
+    analysis = read_summary(run)
+    species = run.species
+    names = [s["name"] for s in species]
     measured = analysis.get("collision_frequency", {})
     kinetic = analysis.get("kinetic_theory_frequency", {})
-    series = run["timeseries"]
-    t = series["time"][()]
+    series = run.series_names
+    t = run.series("time").values
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     ax = axes[0]
     # Row species s (bar colour) collides with the partner: another species or the walls.
     # One particle (and no inflow) has no partner of its own species.
-    single = (run["species/count"][()] == 1) & ("particles_present" not in series)
+    single = (np.array([s["count"] for s in species]) == 1) & ("particles_present" not in series)
     pairs = [(s, f"{a}-{b}", f"{a} with {b}") for s, a in enumerate(names)
              for u, b in enumerate(names) if not (s == u and single[s])]
-    if "walls/name" not in run or len(run["walls/name"]) > 0:  # no wall bars without walls
+    if run.walls:  # no wall bars without walls
         pairs += [(s, f"{a}@walls", f"{a} with walls") for s, a in enumerate(names)]
     value = lambda table, key: table.get(key) if table.get(key) is not None else np.nan  # noqa: E731
     x = np.arange(len(pairs))
@@ -269,7 +265,7 @@ def plot_collisions(run, run_path, path, dpi):
                  pad=34)
 
     ax = axes[1]
-    temperature = series["granular_temperature"][()].reshape(len(t), -1)
+    temperature = run.series("granular_temperature").values.reshape(len(t), -1)
     for s, name in enumerate(names):
         ax.plot(t, temperature[:, s], color=style.species_colour(s), label=f"$\\theta$ {name}")
     if wide_range(temperature):
@@ -290,7 +286,8 @@ def plot_collisions(run, run_path, path, dpi):
     ax.set_ylabel("granular temperature $\\theta$ (m$^2$/s$^2$)")
     if "segregation_index" in series:
         twin = ax.twinx()
-        twin.plot(t, series["segregation_index"][()], color="0.3", ls="--", label="segregation index")
+        twin.plot(t, run.series("segregation_index").values, color="0.3", ls="--",
+                  label="segregation index")
         twin.set_ylabel("segregation index $2(h_s - h_l)/(h_s + h_l)$ (–)")
         twin.spines["right"].set_visible(True)
         lines = ax.get_legend_handles_labels()
@@ -306,8 +303,8 @@ def plot_collisions(run, run_path, path, dpi):
     plt.close(fig)
 
 
-def plot_profiles(run, run_path, path, dpi):
-    profiles = read_summary(run_path).get("profiles")
+def plot_profiles(run, path, dpi):
+    profiles = read_summary(run).get("profiles")
     if not profiles:
         return
     axes_names = "xyz"
@@ -348,17 +345,18 @@ def plot_profiles(run, run_path, path, dpi):
     plt.close(fig)
 
 
-def analysis_figures(run, run_path):
-    """(name, draw(path, dpi)) for each analysis figure this run file supports."""
+def analysis_figures(run):
+    """(name, draw(path, dpi)) for each analysis figure `run` (a carom.Output) supports."""
     figures = []
-    series = run["timeseries"]
-    if "analysis" in run and "lacey_index" in series and len(run["snapshots"]) > 0:
-        figures.append(("mixing", lambda p, dpi: plot_mixing(run, run_path, p, dpi)))
+    series = run.series_names
+    analysed = run.analysis_data() is not None
+    if analysed and "lacey_index" in series and len(run.snapshots) > 0:
+        figures.append(("mixing", lambda p, dpi: plot_mixing(run, p, dpi)))
     if "granular_temperature" in series:
-        figures.append(("collisions", lambda p, dpi: plot_collisions(run, run_path, p, dpi)))
+        figures.append(("collisions", lambda p, dpi: plot_collisions(run, p, dpi)))
     if "profile_sums" in series:
-        figures.append(("profiles", lambda p, dpi: plot_profiles(run, run_path, p, dpi)))
-    if "axial_solid_fraction" in series and "analysis" in run and "plugs" in run["analysis"]:
+        figures.append(("profiles", lambda p, dpi: plot_profiles(run, p, dpi)))
+    if "axial_solid_fraction" in series and analysed and run.analysis_data("plugs") is not None:
         from plug_plots import plot_plugs
-        figures.append(("plugs", lambda p, dpi: plot_plugs(run, read_summary(run_path), p, dpi)))
+        figures.append(("plugs", lambda p, dpi: plot_plugs(run, read_summary(run), p, dpi)))
     return figures

@@ -12,18 +12,12 @@ import matplotlib.pyplot as plt
 import style
 
 
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
-
-
 def flow_definitions(run):
     """(name, set mass flow in kg/s, species index) of each inflow and the name of each outflow,
     read from the scene stored in the run file (names default as carom's: inflow_1, outflow_1,
     ...)."""
-    import tomllib
-
-    scene = tomllib.loads(text(run["scene"][()]))
-    names = [text(n) for n in run["species/name"][()]]
+    scene = run.scene_table
+    names = run.species_names
     inflows = [(entry.get("name", f"inflow_{k + 1}"), float(entry["mass_flow"]),
                 names.index(entry["species"]) if entry.get("species") in names else k)
                for k, entry in enumerate(scene.get("inflow", []))]
@@ -32,15 +26,16 @@ def flow_definitions(run):
 
 
 def plot_flow(run, path, dpi):
-    series = run["timeseries"]
-    t = series["time"][()]
+    """Draws RUN_flow.png of `run` (a carom.Output with particles_present) at `path`."""
+    series = run.series_names
+    t = run.series("time").values
     fig, (mass, count) = plt.subplots(1, 2, figsize=(9.6, 3.8))
     inflows, outflows = flow_definitions(run)
-    names = [text(n) for n in run["species/name"][()]]
+    names = run.species_names
     # Inflows in the colour of the species they feed (one marker per inflow); outflows, which
     # take any species, in black and grey.
     if "entered_mass" in series:
-        entered = series["entered_mass"][()].reshape(len(t), -1)
+        entered = run.series("entered_mass").values.reshape(len(t), -1)
         for j, (name, rate, species) in enumerate(inflows[:entered.shape[1]]):
             c = style.species_colour(species)
             marker = style.partner_marker(j)
@@ -49,7 +44,7 @@ def plot_flow(run, path, dpi):
             mass.plot(t, rate * (t - t[0]), "-", lw=1, color=c,
                       label=f"{name}'s set rate {rate:g} kg/s")
     if "left_mass" in series:
-        left = series["left_mass"][()].reshape(len(t), -1)
+        left = run.series("left_mass").values.reshape(len(t), -1)
         for j, name in enumerate(outflows[:left.shape[1]]):
             mass.plot(t, left[:, j], "s", ms=3, mfc="none", color="black" if j == 0 else "0.5",
                       label=f"left through {name}")
@@ -57,7 +52,7 @@ def plot_flow(run, path, dpi):
     mass.set_ylabel("cumulative mass (kg)")
     mass.set_title("Mass in and out")
     mass.legend(loc="upper left")
-    present = series["particles_present"][()].reshape(len(t), -1)
+    present = run.series("particles_present").values.reshape(len(t), -1)
     for s in range(present.shape[1]):
         count.plot(t, present[:, s], "-", lw=1.4, color=style.species_colour(s), label=names[s])
     count.set_xlabel("time $t$ (s)")

@@ -30,19 +30,21 @@ def bed_top(profile, threshold, min_bins, bin_length, bottom):
 
 
 def plot_plugs(run, summary, path, dpi):
+    """Draws RUN_plugs.png of `run` (a carom.Output with [analysis.plugs]) at `path`; `summary`
+    is summary.json's "analysis" object (its "plugs" in the legend), or None."""
     import matplotlib.pyplot as plt
 
     import style
 
-    series = run["timeseries"]
-    t = series["time"][()]
-    phi = series["axial_solid_fraction"][()]
+    solid_fraction = run.series("axial_solid_fraction")
+    t, phi = solid_fraction.time, solid_fraction.values
     plugs = _summary_plugs(summary) or {}
-    bin_length = float(plugs.get("bin", run["analysis/plugs"].attrs.get("bin", 1.0)))
-    bottom = float(plugs.get("bottom", run["analysis/plugs"].attrs.get("bottom", 0.0)))
+    setup = run.analysis_data("plugs")
+    bin_length = float(plugs.get("bin", setup.get("bin", 1.0)))
+    bottom = float(plugs.get("bottom", setup.get("bottom", 0.0)))
     min_bins = int(plugs.get("min_bins", 2))
     diameter = float(plugs.get("diameter", bin_length))
-    thresholds = [float(x) for x in run["analysis/plugs/thresholds"][()]]
+    thresholds = [float(x) for x in setup["thresholds"]]
     z = bottom + bin_length * np.arange(phi.shape[1] + 1)
 
     fig, (space, top) = plt.subplots(1, 2, figsize=(11, 4.2), gridspec_kw={"width_ratios": [3, 2]})

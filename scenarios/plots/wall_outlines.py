@@ -1,9 +1,9 @@
 """The scene's walls in a snapshot picture (plot.py): where the plane of the picture cuts them.
 
-The walls come from the scene text stored in the run file ([[walls]]): a cylinder or a cone
-(axis along z) cut by the picture's mid-plane gives two lines in a side view and a circle seen
-from above; a polygon is drawn as its outline projected on the picture. Meshes (STL files) are
-not drawn; the picture's note says so.
+The walls come from the scene stored in the run file ([[walls]], read by carom.open): a
+cylinder or a cone (axis along z) cut by the picture's mid-plane gives two lines in a side view
+and a circle seen from above; a polygon is drawn as its outline projected on the picture. Meshes
+(STL files) are not drawn; the picture's note says so.
 """
 import numpy as np
 
@@ -11,13 +11,9 @@ WALL_STYLE = dict(color="0.25", lw=1.2)
 
 
 def _scene_walls(run):
-    import tomllib
-
-    scene = run["scene"][()]
-    scene = scene.decode() if isinstance(scene, bytes) else str(scene)
     try:
-        return tomllib.loads(scene).get("walls", [])
-    except ValueError:
+        return run.scene_table.get("walls", [])
+    except ValueError:  # a scene text TOML cannot read: no walls to draw rather than no picture
         return []
 
 
@@ -27,9 +23,10 @@ def _cut(radius, offset):
 
 
 def draw_walls(ax, run, a, b, depth, middle):
-    """Draws the walls of the run's scene cut by the plane (axes a, b; `depth` axis at
-    `middle`, m). Returns the names of the walls it could not draw."""
-    lower, upper = run["domain/lower"][()], run["domain/upper"][()]
+    """Draws the walls of the run's scene (`run`: a carom.Output) cut by the plane (axes a, b;
+    `depth` axis at `middle`, m). Returns the names of the walls it could not draw."""
+    domain = run.domain
+    lower, upper = domain["lower"], domain["upper"]
     skipped = []
     for wall in _scene_walls(run):
         kind = wall.get("type")

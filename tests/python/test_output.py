@@ -88,3 +88,48 @@ def test_other_files_are_refused_with_a_message(tmp_path):
         carom.open(old)
     with pytest.raises(carom.OutputError, match="no such file"):
         carom.open(tmp_path / "none")
+
+
+def test_snapshots_are_read_by_their_place_as_well_as_by_time(cli_runs):
+    # The plotting scripts' --snapshot K: the K-th snapshot, negative from the end.
+    run = carom.open(cli_runs["gas_bed.toml"])
+    times = run.snapshots
+    for k, t in enumerate(times):
+        for place in (k, k - len(times)):
+            assert run.particles(index=place)["time"] == t and run.gas(index=place)["time"] == t
+            assert np.array_equal(run.particles(index=place)["position"], run.particles(t)["position"])
+    with pytest.raises(carom.OutputError, match="no snapshot 5; it holds 5"):
+        run.particles(index=5)
+    with pytest.raises(carom.OutputError, match="no snapshot -6"):
+        run.gas(index=-6)
+
+
+def test_analysis_data_is_the_analysis_group_of_the_file(cli_runs):
+    # Every dataset and attribute under /analysis, at its place in the nested dicts.
+    run = carom.open(cli_runs["gas_bed.toml"])
+    data = run.analysis_data()
+    raw = h5_datasets(run.path)
+    datasets = [name for name in raw if name.startswith("analysis/")]
+    assert datasets
+    for name in datasets:
+        value = data
+        for part in name.split("/")[1:]:
+            value = value[part]
+        assert np.array_equal(value, raw[name])
+    with h5py.File(run.path, "r") as f:
+        for key, value in f["analysis"].attrs.items():
+            assert data[key] == value and type(data[key]) in (int, float)
+    assert run.species_names[data["mixing_species"]] == run.analysis["mixing"]["species"] == "glass"
+    assert data["vertical_axis"] == 2 and data["mixing_grid"]["cells"].shape == (3,)
+    # A part the scene did not ask for is None, as is the analysis of a checkpoint refused.
+    assert run.analysis_data("plugs") is None
+    with pytest.raises(carom.OutputError, match="carom.Simulation.restore"):
+        carom.open(cli_runs["gas_bed.toml"] / "checkpoint.h5").analysis_data()
+
+
+def test_scene_table_is_the_scene_as_run_parsed(cli_runs):
+    import tomllib
+
+    run = carom.open(cli_runs["duct.toml"])
+    assert run.scene_table == tomllib.loads(run.scene) == tomllib.loads((SCENES / "duct.toml").read_text())
+    assert [entry["species"] for entry in run.scene_table["inflow"]] == run.species_names

@@ -72,6 +72,26 @@ def _text(value):
     return value.decode("utf-8") if isinstance(value, bytes) else str(value)
 
 
+def _value(value):
+    """An HDF5 attribute or dataset's value as Python reads it best: strings as str, one number
+    as a Python number, arrays as numpy arrays (strings in them as lists of str)."""
+    if isinstance(value, np.ndarray) and value.dtype.kind in "OSU":
+        return [_text(v) for v in value.ravel()]
+    if isinstance(value, (bytes, str)):
+        return _text(value)
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def _group_dict(group):
+    """An HDF5 group as a dict: attributes and datasets by name, subgroups as dicts."""
+    data = {name: _value(value) for name, value in group.attrs.items()}
+    for name, item in group.items():
+        data[name] = _group_dict(item) if isinstance(item, h5py.Group) else _value(item[()])
+    return data
+
+
 def _open_h5(path):
     # No HDF5 file lock: the writer of a run (carom run, carom resume) may hold it open.
     try:
@@ -160,7 +180,36 @@ class Output:
         summary = self.summary
         return None if summary is None else summary.get("analysis")
 
+    def analysis_data(self, part=None):
+        """What the run's analysis wrote into the run file beside its time series (/analysis;
+        run_analysis.hpp, bed_outputs.hpp) as a dict: its datasets as numpy arrays (strings as
+        lists of str), its attributes as numbers, its subgroups as dicts of the same kind. None
+        when the run has no analysis, or not that part.
+
+        part None, the analysis itself: id (the particles of t = 0), tagged (1: in the lower
+        half at t = 0), start_height (m), all by id; vertical_axis (0, 1, 2: x, y, z),
+        mixing_species (index into species_names); mixing_grid and field_grid (lower, upper m;
+        cells); with tagged bodies tagged_body_id and tagged_partner (species, then walls).
+        "plugs": thresholds (solid fractions), bottom, bin (m), bins, area (m^2), diameter (m),
+        min_bins. "profiles": heights, thickness, lower, upper, depth (m), start (s),
+        vertical_axis, bin_axis, bins. "bed" and "bed/results": the bed measures, each value's
+        unit beside it as NAME_unit."""
+        self._need_run("analysis")
+
+        def read(f):
+            path = "analysis" if part is None else f"analysis/{part}"
+            return _group_dict(f[path]) if path in f else None
+        return self._read(read)
+
     # ---- the system --------------------------------------------------------------------------
+
+    @property
+    def scene_table(self):
+        """The scene as run (`scene`) parsed: its tables and keys as a dict (SCENES.md), e.g.
+        scene_table["walls"], the [[walls]] entries; needs Python 3.11 (tomllib)."""
+        import tomllib  # here, so that reading arrays works in older Pythons too
+
+        return tomllib.loads(self.scene)
 
     @property
     def species(self):
@@ -209,35 +258,43 @@ class Output:
         self._need_run("snapshots")
         return self._read(lambda f: np.array([f["snapshots"][name].attrs["time"] for name in sorted(f["snapshots"])]))
 
-    def _snapshot_name(self, f, t):
+    def _snapshot_name(self, f, t, index=None):
         names = sorted(f["snapshots"])
         if not names:
             raise OutputError(f"{self.path}: no snapshots yet")
+        if index is not None:
+            # By position, as a list counts (negative from the end): a figure of "snapshot K".
+            if not -len(names) <= index < len(names):
+                raise OutputError(f"{self.path}: no snapshot {index}; it holds {len(names)} "
+                                  f"(0 to {len(names) - 1}, or -1 to {-len(names)} from the end)")
+            return names[index]
         if t is None:
             return names[-1]
         times = np.array([f["snapshots"][name].attrs["time"] for name in names])
         return names[int(np.argmin(np.abs(times - t)))]
 
-    def particles(self, t=None):
+    def particles(self, t=None, index=None):
         """The snapshot nearest time t (s; None: the last) as a dict of numpy arrays, rows in id
         order: position, velocity, spin (N x 3; m, m/s, rad/s), radius (m), species (index into
-        species_names), id; and time, the snapshot's time (s)."""
+        species_names), id; and time, the snapshot's time (s). `index` picks the snapshot by its
+        place in `snapshots` instead (0 the first, -1 the last)."""
         self._need_run("snapshots")
 
         def read(f):
-            g = f["snapshots"][self._snapshot_name(f, t)]
+            g = f["snapshots"][self._snapshot_name(f, t, index)]
             data = {name: g[name][()] for name in ("position", "velocity", "spin", "radius", "species", "id")}
             data["time"] = float(g.attrs["time"])
             return data
         return self._read(read)
 
-    def gas(self, t=None):
+    def gas(self, t=None, index=None):
         """The gas fields of the snapshot nearest time t (s; None: the last): porosity, pressure
-        (Pa) as (nz, ny, nx), velocity (m/s) as (nz, ny, nx, 3), x varying fastest; and time (s)."""
+        (Pa) as (nz, ny, nx), velocity (m/s) as (nz, ny, nx, 3), x varying fastest; and time (s).
+        `index` picks the snapshot by its place in `snapshots` instead, as for particles."""
         self._need_run("gas fields")
 
         def read(f):
-            g = f["snapshots"][self._snapshot_name(f, t)]
+            g = f["snapshots"][self._snapshot_name(f, t, index)]
             if "gas" not in g:
                 raise OutputError(f"{self.path}: this run has no gas fields")
             data = {name: g["gas"][name][()] for name in ("porosity", "pressure", "velocity")}

@@ -14,8 +14,8 @@ coloured by speed, inside the outline of the domain.
     --max-speed V  top of the colour scale, m/s (default: the snapshot's largest speed)
 
 Reads run.xmf with ParaView's default reader for .xmf (Xdmf3ReaderS), as the ParaView GUI
-would; the domain box and the scene's name come from run.h5 when h5py is importable (Debian:
-python3-h5py). Needs ParaView's
+would; the domain box and the scene's name come from run.h5, read by carom.open
+(carom_reader.py), when numpy and h5py are importable (Debian: python3-h5py). Needs ParaView's
 Python (Debian: paraview python3-paraview); without a display run it under xvfb-run (Debian:
 xvfb xauth): `pvpython --force-offscreen-rendering` crashes on machines without a GPU.
 Prints the file written, the snapshot time and the particle count.
@@ -53,16 +53,17 @@ def snapshot_time(times, requested):
 
 
 def run_metadata(xmf):
-    """The domain's (lower, upper) corners and the scene's name from run.h5 beside the sidecar;
-    None when it cannot be read (no h5py, or no run file)."""
+    """The domain's (lower, upper) corners and the scene's name from run.h5 beside the sidecar,
+    read through carom.open (carom_reader.py); None when it cannot be read (no numpy or h5py in
+    ParaView's Python, or no run file)."""
     h5_path = os.path.splitext(xmf)[0] + ".h5"
     try:
-        os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
-        import h5py
-        with h5py.File(h5_path, "r") as f:
-            name = f.attrs.get("scene_name", "")
-            name = name.decode() if isinstance(name, bytes) else str(name)
-            return list(f["domain/lower"][()]), list(f["domain/upper"][()]), name
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        from carom_reader import open_run
+
+        run = open_run(h5_path)
+        domain = run.domain
+        return list(domain["lower"]), list(domain["upper"]), run.scene_name
     except Exception:  # the figure goes on with the particles' bounding box and the folder name
         return None
 

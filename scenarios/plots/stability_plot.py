@@ -115,11 +115,12 @@ def kick_fall(out, row):
     """The distance the bead fell over the run, m: its height in the first snapshot less that in
     the last (run.h5). Kicks make the velocity a sawtooth of amplitude g dt_p between kicks, so
     the fall (the mean settling velocity times the time) is the fair comparison."""
-    import h5py
+    # Here, not at the top: only the kick map reads run files (carom.open needs h5py).
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from carom_reader import open_run
 
-    with h5py.File(os.path.join(out, "cases", "%04d" % int(row["case"]), "run.h5"), "r") as f:
-        keys = sorted(f["snapshots"].keys())
-        return f["snapshots"][keys[0]]["position"][0][2] - f["snapshots"][keys[-1]]["position"][0][2]
+    run = open_run(os.path.join(out, "cases", "%04d" % int(row["case"]), "run.h5"))
+    return run.particles(index=0)["position"][0][2] - run.particles(index=-1)["position"][0][2]
 
 
 def plot_kick(out, before, path):

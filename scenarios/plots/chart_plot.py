@@ -19,7 +19,6 @@ import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -27,9 +26,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402,F401
 import numpy as np  # noqa: E402
 
-
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from carom_reader import OutputError, open_chart  # noqa: E402
 
 
 def fail(message):
@@ -37,27 +35,31 @@ def fail(message):
 
 
 def read(path):
-    with h5py.File(path, "r") as f:
-        chart = {
-            "reference": text(f.attrs["reference"]),
-            "chart_file": text(f.attrs["chart_file"]),
-            "names": [text(n) for n in f["variants/name"][:]],
-            "is_reference": f["variants/reference"][:].astype(bool),
-            "cost": f["variants/cost"][:],
-            "cost_stderr": f["variants/cost_stderr"][:],
-            "completed": f["variants/n_completed"][:],
-            "observables": {},
+    """What the figures draw of a chart's chart.h5, read by carom.open_chart."""
+    try:
+        table = open_chart(path)
+    except OutputError as error:
+        fail(str(error))
+    variants = table.variants
+    chart = {
+        "reference": table.reference,
+        "chart_file": table.chart_file,
+        "names": list(variants["name"]),
+        "is_reference": variants["reference"],
+        "cost": variants["cost"],
+        "cost_stderr": variants["cost_stderr"],
+        "completed": variants["n_completed"],
+        "observables": {},
+    }
+    for key, observable in table.observables.items():
+        chart["observables"][key] = {
+            "key": observable["key"],
+            "tolerance": float(observable["tolerance"]),
+            "measure": observable["error_measure"],
+            **{name: observable[name] for name in ("mean", "stderr", "error", "uncertainty", "noise",
+                                                   "within_noise", "within_tolerance", "pareto",
+                                                   "pareto_within_noise")},
         }
-        for key in [text(k) for k in f["observable_keys"][:]]:
-            g = f["observables"][key]
-            chart["observables"][key] = {
-                "key": text(g.attrs["key"]),
-                "tolerance": float(g.attrs["tolerance"]),
-                "measure": text(g.attrs["error_measure"]),
-                **{name: g[name][:] for name in ("mean", "stderr", "error", "uncertainty", "noise")},
-                **{name: g[name][:].astype(bool)
-                   for name in ("within_noise", "within_tolerance", "pareto", "pareto_within_noise")},
-            }
     return chart
 
 

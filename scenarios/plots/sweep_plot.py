@@ -16,19 +16,17 @@ with --where KEY=VALUE. --list prints the varied keys and metrics and exits.
 """
 import argparse
 import fnmatch
+import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def text(values):
-    """h5py gives fixed-length strings as bytes."""
-    return [v.decode() if isinstance(v, bytes) else str(v) for v in values]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from carom_reader import OutputError, open_sweep  # noqa: E402
 
 
 def label(name):
@@ -42,17 +40,21 @@ def fail(message):
 
 
 class Groups:
-    """The /groups table of summary.h5: varied values, counts, mean and std of every metric."""
+    """The groups of a sweep (carom.open_sweep): varied values, counts, mean and std of every
+    metric, and the rows picked so far."""
 
     def __init__(self, path):
-        with h5py.File(path, "r") as f:
-            self.keys = text(f["varied_keys"][:])
-            self.metrics = text(f["metrics"][:])
-            g = f["groups"]
-            self.values = {k: (g[k][:] if g[k].dtype.kind == "f" else np.array(text(g[k][:]))) for k in self.keys}
-            self.completed = g["n_completed"][:]
-            self.mean = {m: g["mean"][m][:] for m in self.metrics}
-            self.std = {m: g["std"][m][:] for m in self.metrics}
+        try:
+            sweep = open_sweep(path)
+        except OutputError as error:
+            fail(str(error))
+        self.scene = sweep.scene
+        self.keys = sweep.varied_keys
+        self.metrics = sweep.metrics
+        self.values = {k: sweep.groups[k] for k in self.keys}
+        self.completed = sweep.groups["n_completed"]
+        self.mean = sweep.mean
+        self.std = sweep.std
         self.rows = np.arange(len(self.completed))
 
     def key(self, name):
@@ -170,9 +172,7 @@ def main():
     width = max(7.0, 1.4 * len(groups.rows) + 2.0) if args.stack else 7.0
     figure, axes = plt.subplots(figsize=(width, 5), layout="constrained")
     (plot_stack if args.stack else plot_lines)(groups, args, axes)
-    with h5py.File(args.summary, "r") as f:
-        scene = f.attrs["scene"]
-    axes.set_title(args.title or (scene.decode() if isinstance(scene, bytes) else str(scene)).split("/")[-1])
+    axes.set_title(args.title or groups.scene.split("/")[-1])
     axes.grid(alpha=0.3)
     out = args.out or "sweep.png"
     figure.savefig(out, dpi=150)

@@ -83,3 +83,21 @@ def cli_runs(tmp_path_factory):
         cli("run", SCENES / name, "--out", out, "--quiet")
         runs[name] = out
     return runs
+
+
+@pytest.fixture(scope="session")
+def sweep_and_chart(tmp_path_factory):
+    """`carom sweep` (two restitutions, two seeds) and `carom chart` (two variants, two seeds) of
+    the soft-sphere box, once per session: {"sweep": its output directory, "chart": the chart's}."""
+    root = tmp_path_factory.mktemp("tables")
+    sweep_file = root / "sweep.toml"
+    sweep_file.write_text(f'[sweep]\nscene = "{SCENES / "soft_box.toml"}"\nseeds = [1, 2]\n'
+                          '[[sweep.vary]]\nkey = "collisions.default.e"\nvalues = [0.7, 0.9]\n')
+    chart_file = root / "chart.toml"
+    chart_file.write_text(f'[chart]\nscene = "{SCENES / "soft_box.toml"}"\nseeds = [1, 2]\nreference = "e09"\n'
+                          '[[chart.observable]]\nkey = "mean_temperature"\ntolerance = 0.5\n'
+                          '[[chart.variant]]\nname = "e09"\n'
+                          '[[chart.variant]]\nname = "e07"\nset = { "collisions.default.e" = 0.7 }\n')
+    cli("sweep", sweep_file, "--out", root / "sweep", "--quiet")
+    cli("chart", chart_file, "--out", root / "chart", "--quiet")
+    return {"sweep": root / "sweep", "chart": root / "chart"}

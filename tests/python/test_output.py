@@ -1,6 +1,7 @@
-"""carom.open: run files, checkpoints and output directories read back as numpy arrays. The
-reader is checked against the file read directly with h5py, and against the units of every time
-series the test runs write.
+"""carom.open: run files, checkpoints and output directories read back as numpy arrays; and
+carom.open_sweep, carom.open_chart: the tables of a sweep and of a chart. The readers are checked
+against the files read directly with h5py, and against the units of every time series the test
+runs write.
 """
 import json
 
@@ -9,7 +10,7 @@ import numpy as np
 import pytest
 
 import carom
-from conftest import METHOD_SCENES, SCENES, h5_datasets
+from conftest import METHOD_SCENES, SCENES, assert_equal_arrays, h5_datasets
 
 
 def test_particles_and_gas_are_the_snapshots(cli_runs):
@@ -133,3 +134,58 @@ def test_scene_table_is_the_scene_as_run_parsed(cli_runs):
     run = carom.open(cli_runs["duct.toml"])
     assert run.scene_table == tomllib.loads(run.scene) == tomllib.loads((SCENES / "duct.toml").read_text())
     assert [entry["species"] for entry in run.scene_table["inflow"]] == run.species_names
+
+
+
+def _texts(values):
+    return [v.decode() if isinstance(v, bytes) else str(v) for v in values]
+
+
+def test_a_sweeps_tables_are_the_files_columns(sweep_and_chart):
+    sweep = carom.open_sweep(sweep_and_chart["sweep"])  # the directory: its summary.h5
+    raw = h5_datasets(sweep.path)
+    assert sweep.varied_keys == ["collisions.default.e"] == _texts(raw["varied_keys"])
+    assert sweep.metrics == _texts(raw["metrics"]) and "mean_temperature" in sweep.metrics
+    for table, columns in (("cases", sweep.cases), ("groups", sweep.groups), ("groups/mean", sweep.mean),
+                           ("groups/std", sweep.std)):
+        stored = {name.split("/")[-1] for name in raw if name.rsplit("/", 1)[0] == table}
+        assert set(columns) == stored
+        for name in stored:
+            expected = raw[f"{table}/{name}"]
+            if expected.dtype.kind in "OS":  # strings come as str
+                assert list(columns[name]) == _texts(expected)
+            else:
+                assert_equal_arrays(columns[name], expected, f"{table}/{name}")
+    assert list(sweep.cases["status"]) == ["completed"] * 4 and sweep.groups["n_completed"].tolist() == [2, 2]
+    assert sweep.groups["collisions.default.e"].tolist() == [0.7, 0.9]
+    assert sweep.mean["mean_temperature"].shape == (2,) and sweep.scene.endswith("soft_box.toml")
+
+
+def test_a_charts_tables_are_the_files_columns(sweep_and_chart):
+    chart = carom.open_chart(sweep_and_chart["chart"])
+    raw = h5_datasets(chart.path)
+    assert chart.reference == "e09" and chart.observable_keys == ["mean_temperature"]
+    assert list(chart.variants["name"]) == ["e09", "e07"] and chart.variants["reference"].tolist() == [True, False]
+    assert_equal_arrays(chart.variants["cost"], raw["variants/cost"], "variants/cost")
+    observable = chart.observables["mean_temperature"]
+    for name in ("mean", "stderr", "error", "uncertainty", "noise"):
+        assert_equal_arrays(observable[name], raw[f"observables/mean_temperature/{name}"], name)
+    for flag in ("within_noise", "within_tolerance", "pareto", "pareto_within_noise"):
+        assert observable[flag].dtype == bool
+        assert observable[flag].tolist() == (raw[f"observables/mean_temperature/{flag}"] != 0).tolist()
+    assert observable["tolerance"] == 0.5 and observable["key"] == "mean_temperature"
+    assert observable["error_measure"] in ("relative", "absolute")
+    assert_equal_arrays(chart.cases["observables"]["mean_temperature"], raw["cases/observables/mean_temperature"],
+                        "cases/observables/mean_temperature")
+    assert list(chart.cases["status"]) == ["completed"] * 4
+
+
+def test_each_table_reader_refuses_the_other_files_with_a_message(sweep_and_chart, cli_runs):
+    with pytest.raises(carom.OutputError, match="a chart's chart.h5: carom.open_chart reads it"):
+        carom.open_sweep(sweep_and_chart["chart"] / "chart.h5")
+    with pytest.raises(carom.OutputError, match="a carom run file: carom.open reads it"):
+        carom.open_chart(cli_runs["duct.toml"] / "run.h5")
+    with pytest.raises(carom.OutputError, match="no such file"):
+        carom.open_chart(sweep_and_chart["sweep"])
+    with pytest.raises(carom.OutputError, match="a sweep's summary.h5: carom.open_sweep reads it"):
+        carom.open(sweep_and_chart["sweep"] / "summary.h5")

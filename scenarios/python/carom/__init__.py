@@ -12,18 +12,21 @@
 
 The guide is scenarios/guides/python.md. After the build, Debian's Python imports the package
 with PYTHONPATH=build/release/python. The compiled part (_carom) runs carom's own code; the
-reader of outputs (_output.py) needs only numpy and h5py.
+readers of outputs (_output.py: runs and checkpoints; _summaries.py: sweeps and charts) need only
+numpy and h5py.
 """
 import os
 
 from . import _carom
 from ._carom import Check, RunError, Scene, SceneError, Simulation, version
 from ._output import Output, OutputError, Series, SERIES_UNITS, open
+from ._summaries import Chart, Sweep, open_chart, open_sweep
 
 __version__ = version
 # carom.open is left out: `from carom import *` must not hide the built-in open.
 __all__ = ["Scene", "SceneError", "RunError", "Check", "Simulation", "run", "resume", "sweep", "chart",
-           "Output", "OutputError", "Series", "SERIES_UNITS", "executable"]
+           "Output", "OutputError", "Series", "SERIES_UNITS", "Sweep", "Chart", "open_sweep", "open_chart",
+           "executable"]
 
 #: The `carom` binary built with this module (the cases of sweep() and chart() run it).
 executable = _carom.executable

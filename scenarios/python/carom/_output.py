@@ -124,7 +124,9 @@ class Output:
         with _open_h5(path) as f:
             kind = _text(f.attrs["kind"]) if "kind" in f.attrs else ""
             if kind not in ("carom run", "carom checkpoint"):
-                what = "a sweep's or chart's summary" if "sweep_file" in f.attrs else "not a carom run file or checkpoint"
+                what = ("a sweep's summary.h5: carom.open_sweep reads it" if "sweep_file" in f.attrs
+                        else "a chart's chart.h5: carom.open_chart reads it" if "chart_file" in f.attrs
+                        else "not a carom run file or checkpoint")
                 raise OutputError(f"{path}: an HDF5 file, but {what} (root attribute 'kind' is "
                                   f"{repr(kind) if kind else 'missing'}); `carom info --tree {path}` lists what it holds")
             self.kind = kind.split()[1]

@@ -214,7 +214,13 @@ std::string bed_report(const BedGeometry& g, const BedConclusions& c) {
     << bed_text(g.floor) << " m). A share height is the height below which that share of the "
        "beads' tops lie; the surface is where the horizontally averaged solid fraction (bins of "
     << bed_text(g.bin, 1e3) << " mm, each bead's exact volume per bin) falls below "
-    << bed_text(g.threshold) << ".\n\n| bed height | mean (mm) | std (mm) | min (mm) | max (mm) |\n"
+    << bed_text(g.threshold) << ".\n";
+  if (c.samples == 0) {
+    r << "\nNo sample at or after `start`: the run ended before it, and there is nothing to "
+         "conclude (run on, or lower `start`).\n";
+    return r.str();
+  }
+  r << "\n| bed height | mean (mm) | std (mm) | min (mm) | max (mm) |\n"
        "|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < c.heights.size(); ++k) {
     const SeriesSpread& s = c.heights[k];

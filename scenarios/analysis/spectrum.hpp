@@ -9,6 +9,7 @@
 /// exactly and nothing elsewhere; off the grid its peak lies within half a bin (1/(2T)) of f and
 /// is lower (leakage). The resolution is 1/T, the highest frequency the Nyquist limit 1/(2 dt).
 /// Parseval: sum_k A_k^2 / 2 (the Nyquist term A^2 in full) is the variance of the series.
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -24,8 +25,12 @@ struct Spectrum {
   std::vector<double> amplitude;   ///< A_k (the series' unit).
   double dominant_frequency = 0;   ///< f_k of the largest A_k (the lowest such k), Hz.
   double dominant_amplitude = 0;   ///< That A_k.
-  double resolution() const { return samples > 0 ? 1.0 / (static_cast<double>(samples) * interval) : 0.0; }
-  double nyquist() const { return interval > 0 ? 0.5 / interval : 0.0; }
+  /// 1/T, Hz; NaN without a spectrum.
+  double resolution() const {
+    return samples > 1 && interval > 0 ? 1.0 / (static_cast<double>(samples) * interval) : NAN;
+  }
+  /// 1/(2 dt), Hz; NaN without a spectrum.
+  double nyquist() const { return samples > 1 && interval > 0 ? 0.5 / interval : NAN; }
 };
 
 /// The spectrum of `values` sampled every `interval` s (at least 2 samples, else NaN numbers and

@@ -27,6 +27,8 @@ def bed_figures(run):
         return []
     figures = [("bed", lambda p, dpi: plot_bed(run, p, dpi))]
     results = run["analysis/bed"].get("results")
+    if results is not None and int(results.attrs.get("samples", 0)) == 0:
+        results = None  # the run ended before the averaging start: nothing averaged to draw
     if results is not None and "spectrum_amplitude" in results:
         figures.append(("bed_spectrum", lambda p, dpi: plot_bed_spectrum(run, p, dpi)))
     if results is not None and "map_solid_fraction" in results:

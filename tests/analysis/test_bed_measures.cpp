@@ -273,5 +273,28 @@ TEST(BedPressure, ProbeSpectrumUsesTheEvenlySpacedSamplesAfterStart) {
   EXPECT_TRUE(c.pressure);
 }
 
+TEST(BedConclusions, ARunEndingBeforeTheStartConcludesNothingAndSaysSo) {
+  // Start at 1 s, samples to 0.2 s: no sample to average. Every number is NaN (null in JSON),
+  // the spectra are empty, and the report says why instead of a table of n/a.
+  BedGeometry g;
+  g.shares = {0.95};
+  g.start = 1.0;
+  g.gas = true;
+  g.probe_heights = {0.01};
+  const std::vector<double> times{0.0, 0.1, 0.2};
+  const BedConclusions c = conclude_bed(g, times, std::vector<double>(6, 1e-3),
+                                        std::vector<double>(9, 1.0), std::vector<double>(3, 5.0),
+                                        std::vector<double>(3 * g.map_width(), 0.0));
+  EXPECT_EQ(c.samples, 0u);
+  EXPECT_TRUE(std::isnan(c.heights[0].mean));
+  EXPECT_TRUE(std::isnan(c.pressure_drop.mean));
+  ASSERT_EQ(c.probes.size(), 1u);
+  EXPECT_TRUE(c.probes[0].amplitude.empty());
+  EXPECT_TRUE(std::isnan(c.probes[0].resolution()));
+  EXPECT_TRUE(std::isnan(c.solid_fraction[0]));
+  EXPECT_NE(bed_report(g, c).find("No sample at or after `start`"), std::string::npos);
+  EXPECT_NE(bed_json(g, c).find("\"mean\": null"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace carom

@@ -1,4 +1,4 @@
-// `carom check` cites the shipped charts (scenarios/cli/chart_evidence.hpp): where a chart backs
+// `carom check` cites the shipped charts (scenarios/analysis/chart_evidence.hpp): where a chart backs
 // a recommendation, its reason carries the chart's measured numbers and names the chart file,
 // and a chart is cited only where its topic applies. The numbers are taken from
 // chart_evidence.hpp and formatted as recommend.cpp formats them (core/display_number.hpp), so
@@ -10,7 +10,7 @@
 
 #include "core/display_number.hpp"
 #include "recommend_support.hpp"
-#include "scenarios/cli/chart_evidence.hpp"
+#include "scenarios/analysis/chart_evidence.hpp"
 #include "scenarios/cli/recommend.hpp"
 
 namespace carom {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "scenarios/analysis/dispersion.hpp"
+#include "scenarios/analysis/report_settings.hpp"
 #include "scenarios/analysis/run_analysis.hpp"
 #include "scenarios/run/summary.hpp"
 
@@ -178,7 +179,7 @@ std::string RunAnalysis::report(const CollisionMethod& sim) const {
   const std::string tail = tagged_report(c.tagged) +
                            (c.has_profiles ? profiles_report(profiles_, c.profiles) : "") +
                            (c.plugs.empty() ? "" : plugs_report(plugs_, c.plugs)) +
-                           (c.has_bed ? bed_report(bed_, c.bed) : "");
+                           (c.has_bed ? bed_report(bed_, c.bed) : "") + numerical_settings_section(scene_);
   if (!several && !c.gas) return r.str() + tail;
   r << "\n## " << (several ? "Mechanism" : "Gas seen by the particles") << "\n\n";
   if (several && c.gas)

@@ -1,7 +1,8 @@
 #pragma once
 /// The measured numbers of the shipped charts that back `carom check`'s recommendations
-/// (recommend.cpp cites them with the chart's file). The one place they live: when a chart is
-/// run again, change its block here to the numbers its record then states (the record and the
+/// (scenarios/cli/recommend.cpp cites them with the chart's file) and report.md's account of what
+/// its numbers depend on (report_settings.cpp). The one place they live: when a chart is run
+/// again, change its block here to the numbers its record then states (the record and the
 /// command that reproduces each number are named with the chart).
 
 namespace carom::evidence {
@@ -114,5 +115,20 @@ inline constexpr ChartSource kSoftLoadMap{"scenarios/scenes/stability_soft_load.
 /// fall on the floor (Pa): the boundary follows the Hertz impact estimate (E ~ g over the map).
 inline constexpr double kSoftLoadStopped = 3e6, kSoftLoadCompleted = 1e7,
                         kSoftLoadHertzEstimate = 4.9e6;
+
+// ---------------------------------------------------------------------------------------------
+/// The main job's bed (fines_bed.toml, 0.5 s after 0.2 s of settling, each TC time settling its
+/// own bed) at TC times of 1e-4, 5e-5, 2e-5 and 1e-5 s, event-driven with relax flights
+/// (scenarios/chart/CHARTS.md, "The fines bed's TC time").
+inline constexpr ChartSource kFinesBedTc{"scenarios/scenes/fines_bed_tc_chart.toml", "2026-12-03",
+                                         "scenarios/chart/CHARTS.md"};
+inline constexpr int kFinesBedTcSeeds = 3;
+/// The scene's TC time and the shortest charted (s), and the longest whose mixing rate was within
+/// the seeds' noise of the shortest's.
+inline constexpr double kFinesBedTcShipped = 1e-4, kFinesBedTcShortest = 1e-5, kFinesBedTcConverged = 2e-5;
+/// The large beads' mixing rate (1/s, mean of the seeds) at the scene's and the shortest TC time.
+inline constexpr double kFinesBedTcMixingShipped = 0.36, kFinesBedTcMixingShortest = 0.70;
+/// Their collisions with each other per large bead (1/s) at the scene's and the shortest TC time.
+inline constexpr double kFinesBedTcLargeLargeShipped = 2630, kFinesBedTcLargeLargeShortest = 13200;
 
 }  // namespace carom::evidence

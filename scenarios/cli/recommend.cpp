@@ -12,7 +12,7 @@
 #include "core/display_number.hpp"
 #include "events/soft_sphere/contact_model.hpp"
 #include "fluid/drag.hpp"
-#include "scenarios/cli/chart_evidence.hpp"
+#include "scenarios/analysis/chart_evidence.hpp"
 
 namespace carom {
 

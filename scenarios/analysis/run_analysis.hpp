@@ -57,7 +57,7 @@ class RunAnalysis {
               double resume_time);
 
   /// The /analysis group of a fresh run file: tagged (by particle id, 0/1), start_height (m),
-  /// sample grids. Written once at t = 0.
+  /// sample grids, the geometry of the profiles, plugs and bed measures. Written once at t = 0.
   void write_setup(const std::string& run_file) const;
   /// Measures a sample at sim.time(), remembers it and returns it for the run file.
   SeriesRow sample(const CollisionMethod& sim, const GasCoupling* gas);

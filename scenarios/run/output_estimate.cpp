@@ -79,6 +79,14 @@ OutputEstimate estimate_output(const Scene& scene, std::size_t particles) {
   // impulse and force by partner (3 T C each), the group's mean velocity and force (3 each).
   const double T = static_cast<double>(scene.analysis.tagged_bodies.size());
   if (T > 0) values += 9 * T + 6 * T * (S + W) + 6, series += 7;
+  // bed_measures.hpp: the heights (one per share and the surface), with a gas the pressures (3)
+  // and the probes, and the map sums (4 per bin).
+  if (const BedSettings& bed = scene.analysis.bed; bed.enabled) {
+    const double probes = static_cast<double>(bed.probes.size() + bed.probe_heights.size());
+    values += static_cast<double>(bed.height_shares.size()) + 1 + 4.0 * bed.map_bins[0] * bed.map_bins[1];
+    series += 2;
+    if (gas) values += 3 + probes, series += 1 + (probes > 0 ? 1 : 0);
+  }
   e.sample_bytes = values * 8;
   const double scene_text = static_cast<double>(scene.text.size());
   e.checkpoint_bytes = n * kCheckpointParticleBytes + cells * kCheckpointGasCellBytes + kFileOverheadBytes + scene_text;

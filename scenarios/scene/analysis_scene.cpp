@@ -94,10 +94,11 @@ void read_bed_section(TableReader& t, Scene& scene) {
   if (b.map_axis == vertical)
     t.fail("map_axis", "is the vertical axis " + up + ": the maps run across it (choose another axis)");
   const int depth = 3 - vertical - b.map_axis;
-  // Default bins: about two largest diameters each, at most 100 per axis.
+  // Default bins: about two largest diameters each, at most 50 per axis (every sample writes 32
+  // bytes per bin to run.h5: 80 kB at 50 x 50).
   const auto default_bins = [&](int a) {
     const double length = domain.upper[a] - domain.lower[a];
-    return largest > 0.0 ? std::clamp(static_cast<int>(std::floor(length / (2.0 * largest))), 1, 100) : 1;
+    return largest > 0.0 ? std::clamp(static_cast<int>(std::floor(length / (2.0 * largest))), 1, 50) : 1;
   };
   b.map_bins = {default_bins(b.map_axis), default_bins(vertical)};
   if (t.has("map_bins")) {

@@ -13,8 +13,12 @@
 #include <numbers>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_support.hpp"
 #include "core/hdf5.hpp"
+#include "scenarios/run/output_estimate.hpp"
+#include "scenarios/scene/scene.hpp"
 
 namespace carom_cli_test {
 namespace {
@@ -167,6 +171,22 @@ TEST_F(Cli, BedWithoutAGasHasNoPressureAndSaysWhy) {
   EXPECT_NE(read(dir_ / "r" / "report.md").find("No gas in this scene"), std::string::npos);
   const carom::h5::File file = carom::h5::File::open((dir_ / "r" / "run.h5").string(), false);
   EXPECT_FALSE(file.open_group("timeseries").contains("bed_pressure"));
+}
+
+// A run whose file is mostly its bed maps (40 x 80 bins, 102 kB a sample): the output estimate
+// that refuses runs too large to write counts them, within the factor 1.25 it keeps for the rest.
+TEST_F(Cli, BedMapsAreInTheOutputEstimate) {
+  scene("dry.toml", dry_bed());
+  const std::vector<std::string> overrides{"analysis.bed.map_bins=[40, 80]"};
+  ASSERT_EQ(carom("run dry.toml --out r --quiet --set 'analysis.bed.map_bins=[40, 80]'"), 0) << out_;
+  const std::size_t particles = nlohmann::json::parse(read(dir_ / "r" / "summary.json"))["particles"];
+  const carom::OutputEstimate e =
+      carom::estimate_output(carom::load_scene((dir_ / "dry.toml").string(), overrides), particles);
+  double written = 0;
+  for (const char* name : {"run.h5", "run.xmf", "checkpoint.h5"}) written += double(fs::file_size(dir_ / "r" / name));
+  EXPECT_GT(written, 5e6);  // 61 samples of 102 kB: the maps are most of it
+  EXPECT_GT(e.bytes, written / 1.25) << "estimate " << e.bytes << " bytes, written " << written;
+  EXPECT_LT(e.bytes, written * 1.25) << "estimate " << e.bytes << " bytes, written " << written;
 }
 
 TEST_F(Cli, BedKeysOutOfRangeNameFileLineKeyAndRange) {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/nan.hpp"
-#include "fluid/overlap.hpp"
+#include "scenarios/analysis/gas_probes.hpp"
 #include "scenarios/scene/scene.hpp"
 
 namespace carom {
@@ -18,21 +18,6 @@ namespace {
 double sphere_volume_below(double a, double s) {
   s = std::clamp(s, -a, a);
   return std::numbers::pi * (a + s) * (a + s) * (2.0 * a - s) / 3.0;
-}
-
-/// The two cell-centre indices about coordinate c (in cells from the lower face) along an axis
-/// of n cells, and the weight of the upper one; clamped to the outermost centres.
-struct CentrePair {
-  int lower = 0, upper = 0;
-  double weight = 0;
-};
-CentrePair centre_pair(double c, int n) {
-  const double x = std::clamp(c - 0.5, 0.0, static_cast<double>(n - 1));
-  CentrePair p;
-  p.lower = std::min(static_cast<int>(std::floor(x)), n - 1);
-  p.upper = std::min(p.lower + 1, n - 1);
-  p.weight = x - p.lower;
-  return p;
 }
 
 /// Mean, standard deviation, minimum and maximum of the finite values of column k of rows
@@ -159,97 +144,6 @@ double surface_height(const std::vector<double>& profile, double bin, double thr
     return (static_cast<double>(j) + 0.5) * bin + bin * (above - threshold) / (above - beyond);
   }
   return kNaN;
-}
-
-double pressure_at_point(const std::vector<double>& pressure, const std::array<int, 3>& cells,
-                         const Vec3& lower, const Vec3& size, const Vec3& r) {
-  std::array<CentrePair, 3> p;
-  for (int k = 0; k < 3; ++k) p[k] = centre_pair((r[k] - lower[k]) / size[k], cells[k]);
-  double value = 0.0;
-  for (int corner = 0; corner < 8; ++corner) {
-    double weight = 1.0;
-    std::array<int, 3> index{};
-    for (int k = 0; k < 3; ++k) {
-      const bool up = (corner >> k) & 1;
-      index[k] = up ? p[k].upper : p[k].lower;
-      weight *= up ? p[k].weight : 1.0 - p[k].weight;
-    }
-    if (weight == 0.0) continue;
-    value += weight * pressure[static_cast<std::size_t>(index[0] + cells[0] * (index[1] + cells[1] * index[2]))];
-  }
-  return value;
-}
-
-double pressure_at_level(const std::vector<double>& pressure, const std::vector<double>& open_volume,
-                         const std::array<int, 3>& cells, const Vec3& lower, const Vec3& size,
-                         int axis, double level) {
-  // Open-volume-weighted mean of every layer of cells across `axis`.
-  std::vector<double> sum(static_cast<std::size_t>(cells[axis]), 0.0), weight(sum.size(), 0.0);
-  for (int z = 0; z < cells[2]; ++z)
-    for (int y = 0; y < cells[1]; ++y)
-      for (int x = 0; x < cells[0]; ++x) {
-        const std::size_t c = static_cast<std::size_t>(x + cells[0] * (y + cells[1] * z));
-        const std::size_t layer = static_cast<std::size_t>(std::array<int, 3>{x, y, z}[axis]);
-        sum[layer] += open_volume[c] * pressure[c];
-        weight[layer] += open_volume[c];
-      }
-  const CentrePair p = centre_pair((level - lower[axis]) / size[axis], cells[axis]);
-  const double a = sum[p.lower] / weight[p.lower], b = sum[p.upper] / weight[p.upper];
-  return p.weight == 0.0 ? a : (1.0 - p.weight) * a + p.weight * b;
-}
-
-std::vector<double> map_sums(const BedGeometry& g, const std::vector<Vec3>& positions,
-                             const std::vector<Vec3>& velocities, const std::vector<double>& radii,
-                             const std::vector<double>& masses) {
-  std::vector<double> row(g.map_width(), 0.0);
-  const int across = g.map_axis, depth = g.depth_axis(), up = g.vertical;
-  const int columns = g.map_bins[0], rows = g.map_bins[1];
-  const double width = (g.map_upper - g.map_lower) / columns, height = g.extent / rows;
-  const double slab_low = g.slab_centre - 0.5 * g.slab_thickness;
-  const double slab_high = slab_low + g.slab_thickness;
-  // The shifts to a bead's periodic images along an axis that it reaches across.
-  const auto images = [&](int axis, double x, double a) {
-    std::vector<double> shifts{0.0};
-    if (!g.periodic[axis]) return shifts;
-    const double length = g.upper[axis] - g.lower[axis];
-    if (x - a < g.lower[axis]) shifts.push_back(length);
-    if (x + a > g.upper[axis]) shifts.push_back(-length);
-    return shifts;
-  };
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const double a = radii[i], sphere = 4.0 / 3.0 * std::numbers::pi * a * a * a;
-    for (double shift_across : images(across, positions[i][across], a))
-      for (double shift_depth : images(depth, positions[i][depth], a)) {
-        Vec3 c = positions[i];
-        c[across] += shift_across;
-        c[depth] += shift_depth;
-        if (c[depth] + a <= slab_low || c[depth] - a >= slab_high) continue;
-        const int c0 = std::max(0, static_cast<int>(std::floor((c[across] - a - g.map_lower) / width)));
-        const int c1 = std::min(columns - 1, static_cast<int>(std::floor((c[across] + a - g.map_lower) / width)));
-        const int u0 = std::max(0, static_cast<int>(std::floor((c[up] - a - g.floor) / height)));
-        const int u1 = std::min(rows - 1, static_cast<int>(std::floor((c[up] + a - g.floor) / height)));
-        for (int u = u0; u <= u1; ++u)
-          for (int b = c0; b <= c1; ++b) {
-            Vec3 low, high;
-            low[across] = g.map_lower + b * width;
-            high[across] = g.map_lower + (b + 1) * width;
-            low[up] = g.floor + u * height;
-            high[up] = g.floor + (u + 1) * height;
-            low[depth] = slab_low;
-            high[depth] = slab_high;
-            const double volume = sphere_box_volume(c, a, low, high);
-            if (!(volume > 0.0)) continue;
-            const double share = masses[i] * volume / sphere;
-            double* bin = &row[(static_cast<std::size_t>(u) * static_cast<std::size_t>(columns) +
-                                static_cast<std::size_t>(b)) * BedGeometry::kMapValues];
-            bin[0] += volume;
-            bin[1] += share;
-            bin[2] += share * velocities[i][across];
-            bin[3] += share * velocities[i][up];
-          }
-      }
-  }
-  return row;
 }
 
 BedSample sample_bed(const BedGeometry& g, const CollisionMethod& sim, const GasCoupling* gas) {

@@ -45,6 +45,7 @@
 #include "core/vec3.hpp"
 #include "events/method.hpp"
 #include "fluid/coupling.hpp"
+#include "scenarios/analysis/gas_probes.hpp"
 #include "scenarios/analysis/spectrum.hpp"
 
 namespace carom {
@@ -112,20 +113,7 @@ std::vector<double> layer_solid_fraction(const std::vector<double>& heights,
 /// top of the profile when that bin is the last); NaN when no bin reaches it.
 double surface_height(const std::vector<double>& profile, double bin, double threshold);
 
-/// Gas pressure at point r (m): trilinear between the centres of the gas cells (`pressure`,
-/// x fastest, then y, z; `cells` per axis from `lower`, cells of `size`), each axis clamped to
-/// its outermost centres.
-double pressure_at_point(const std::vector<double>& pressure, const std::array<int, 3>& cells,
-                         const Vec3& lower, const Vec3& size, const Vec3& r);
-
-/// Mean gas pressure across the domain at coordinate `level` (m) along `axis`: each layer of
-/// cells averaged with the weights `open_volume`, linear between layer centres, clamped to the
-/// outermost layers.
-double pressure_at_level(const std::vector<double>& pressure, const std::vector<double>& open_volume,
-                         const std::array<int, 3>& cells, const Vec3& lower, const Vec3& size,
-                         int axis, double level);
-
-/// One sample's bed_map_sums row (see above).
+/// One sample's bed_map_sums row (see above; bed_maps.cpp).
 std::vector<double> map_sums(const BedGeometry& g, const std::vector<Vec3>& positions,
                              const std::vector<Vec3>& velocities, const std::vector<double>& radii,
                              const std::vector<double>& masses);

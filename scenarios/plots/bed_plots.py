@@ -11,6 +11,9 @@ RUN_bed_spectrum.png  with probes: each probe's amplitude spectrum after the sta
                       the Nyquist frequency in the title;
 RUN_bed_map.png       the time-averaged mid-plane maps: solid fraction with the solids velocity
                       as arrows (the circulation), and the vertical solids mass flux.
+
+`run` is a carom.Output (carom_reader.py): /analysis/bed and its results come from
+run.analysis_data("bed"), the series from run.series.
 """
 import numpy as np
 
@@ -23,27 +26,28 @@ def _text(value):
 
 def bed_figures(run):
     """(name, draw(path, dpi)) for each bed figure this run file supports."""
-    if "analysis" not in run or "bed" not in run["analysis"] or "bed_height" not in run["timeseries"]:
+    bed = run.analysis_data("bed")
+    if bed is None or "bed_height" not in run.series_names:
         return []
-    figures = [("bed", lambda p, dpi: plot_bed(run, p, dpi))]
-    results = run["analysis/bed"].get("results")
-    if results is not None and int(results.attrs.get("samples", 0)) == 0:
+    figures = [("bed", lambda p, dpi: plot_bed(run, bed, p, dpi))]
+    results = bed.get("results")
+    if results is not None and int(results.get("samples", 0)) == 0:
         results = None  # the run ended before the averaging start: nothing averaged to draw
     if results is not None and "spectrum_amplitude" in results:
-        figures.append(("bed_spectrum", lambda p, dpi: plot_bed_spectrum(run, p, dpi)))
+        figures.append(("bed_spectrum", lambda p, dpi: plot_bed_spectrum(bed, p, dpi)))
     if results is not None and "map_solid_fraction" in results:
-        figures.append(("bed_map", lambda p, dpi: plot_bed_map(run, p, dpi)))
+        figures.append(("bed_map", lambda p, dpi: plot_bed_map(run, bed, p, dpi)))
     return figures
 
 
 def _probe_labels(bed):
     labels = []
     if "probes" in bed:
-        for point in np.atleast_2d(bed["probes"][()]):
+        for point in np.atleast_2d(bed["probes"]):
             if point.size == 3:
                 labels.append("point (" + ", ".join(f"{1e3 * x:.3g}" for x in point) + ") mm")
     if "probe_heights" in bed:
-        labels += [f"cross-section at {1e3 * h:.3g} mm" for h in bed["probe_heights"][()]]
+        labels += [f"cross-section at {1e3 * h:.3g} mm" for h in np.atleast_1d(bed["probe_heights"])]
     return labels
 
 
@@ -52,20 +56,20 @@ def _shade_start(ax, t, start):
         ax.axvspan(t[0], start, color="0.92", lw=0, zorder=0)
 
 
-def plot_bed(run, path, dpi):
+def plot_bed(run, bed, path, dpi):
     import matplotlib.pyplot as plt
 
     import style
 
-    bed = run["analysis/bed"]
-    series = run["timeseries"]
-    t = series["time"][()]
-    heights = np.atleast_2d(series["bed_height"][()])
-    shares = bed["height_shares"][()]
-    start = float(bed.attrs["start"])
-    threshold = float(bed.attrs["threshold"])
-    up = AXES[int(bed.attrs["vertical_axis"])]
-    gas = "bed_pressure" in series
+    names = run.series_names
+    height_series = run.series("bed_height")
+    t = height_series.time
+    heights = np.atleast_2d(height_series.values)
+    shares = np.atleast_1d(bed["height_shares"])
+    start = float(bed["start"])
+    threshold = float(bed["threshold"])
+    up = AXES[int(bed["vertical_axis"])]
+    gas = "bed_pressure" in names
     fig, axes = plt.subplots(2 if gas else 1, 1, figsize=(9.5, 6.4 if gas else 3.6), sharex=True,
                              squeeze=False)
     ax = axes[0, 0]
@@ -81,15 +85,15 @@ def plot_bed(run, path, dpi):
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     if gas:
         ax = axes[1, 0]
-        pressure = np.atleast_2d(series["bed_pressure"][()])
-        column = float(bed.attrs["gas_density"]) * float(bed.attrs["gravity"]) * float(bed.attrs["gas_height"])
+        pressure = np.atleast_2d(run.series("bed_pressure").values)
+        column = float(bed["gas_density"]) * float(bed["gravity"]) * float(bed["gas_height"])
         carried = pressure[:, 0] - column + pressure[:, 1]
         ax.plot(t, carried, color="black", lw=1.2,
                 label=r"bed pressure drop $\Delta p - \rho_g g H + $ inflow")
         ax.plot(t, pressure[:, 2], color=style.REFERENCE_COLOUR, lw=1.0, ls=":",
                 label=r"buoyant weight per area $W/A$")
-        if "bed_probe_pressure" in series:
-            probes = np.atleast_2d(series["bed_probe_pressure"][()])
+        if "bed_probe_pressure" in names:
+            probes = np.atleast_2d(run.series("bed_probe_pressure").values)
             for k, (label, colour) in enumerate(zip(_probe_labels(bed),
                                                     style.sequence_colours(probes.shape[1], "plasma", 0.75))):
                 ax.plot(t, probes[:, k], color=colour, lw=0.9, label=f"gas pressure, {label}")
@@ -104,18 +108,17 @@ def plot_bed(run, path, dpi):
     plt.close(fig)
 
 
-def plot_bed_spectrum(run, path, dpi):
+def plot_bed_spectrum(bed, path, dpi):
     import matplotlib.pyplot as plt
 
     import style
 
-    bed = run["analysis/bed"]
     results = bed["results"]
-    frequency = results["spectrum_frequency"][()]
-    amplitude = np.atleast_2d(results["spectrum_amplitude"][()])
-    dominant = results["probe_dominant_frequency"][()]
-    peak = results["probe_dominant_amplitude"][()]
-    interval = results["probe_interval"][()]
+    frequency = np.atleast_1d(results["spectrum_frequency"])
+    amplitude = np.atleast_2d(results["spectrum_amplitude"])
+    dominant = np.atleast_1d(results["probe_dominant_frequency"])
+    peak = np.atleast_1d(results["probe_dominant_amplitude"])
+    interval = np.atleast_1d(results["probe_interval"])
     labels = _probe_labels(bed)
     fig, ax = plt.subplots(figsize=(9.5, 3.8))
     colours = style.sequence_colours(amplitude.shape[0], "plasma", 0.75)
@@ -147,20 +150,21 @@ def plot_bed_spectrum(run, path, dpi):
     plt.close(fig)
 
 
-def plot_bed_map(run, path, dpi):
+def plot_bed_map(run, bed, path, dpi):
     import matplotlib.pyplot as plt
     from matplotlib.colors import TwoSlopeNorm
 
-    bed = run["analysis/bed"]
     results = bed["results"]
-    phi = results["map_solid_fraction"][()]
-    velocity = results["map_velocity"][()]
-    flux = results["map_flux"][()]
-    across, up = AXES[int(bed.attrs["map_axis"])], AXES[int(bed.attrs["vertical_axis"])]
-    lower, upper = float(bed.attrs["map_lower"]), float(bed.attrs["map_upper"])
-    floor = float(bed.attrs["floor"])
+    phi = np.asarray(results["map_solid_fraction"], dtype=float)
+    velocity = np.asarray(results["map_velocity"], dtype=float)
+    flux = np.asarray(results["map_flux"], dtype=float)
+    across, up = AXES[int(bed["map_axis"])], AXES[int(bed["vertical_axis"])]
+    lower, upper = float(bed["map_lower"]), float(bed["map_upper"])
+    floor = float(bed["floor"])
     rows, columns = phi.shape
-    height = float(bed.attrs["extent"])
+    vertical = int(bed["vertical_axis"])
+    height = float(bed["extent"]) if "extent" in bed else \
+        float(np.asarray(run.domain["upper"])[vertical] - np.asarray(run.domain["lower"])[vertical])
     x = 1e3 * np.linspace(lower, upper, columns + 1)
     z = 1e3 * (floor + np.linspace(0.0, height, rows + 1))
     # Up to two bins above the highest bin the beads reached in the mean (the freeboard beyond
@@ -201,9 +205,9 @@ def plot_bed_map(run, path, dpi):
         ax.set_aspect("equal")
         ax.set_xlabel(f"${across}$ (mm)")
     left.set_ylabel(f"${up}$ (mm)")
-    thickness, centre = float(bed.attrs["slab_thickness"]), float(bed.attrs["slab_centre"])
-    depth = AXES[3 - int(bed.attrs["vertical_axis"]) - int(bed.attrs["map_axis"])]
-    fig.suptitle(f"time averages after {float(bed.attrs['start']):.3g} s in the slab "
+    thickness, centre = float(bed["slab_thickness"]), float(bed["slab_centre"])
+    depth = AXES[3 - int(bed["vertical_axis"]) - int(bed["map_axis"])]
+    fig.suptitle(f"time averages after {float(bed['start']):.3g} s in the slab "
                  f"{1e3 * thickness:.3g} mm thick about ${depth}$ = {1e3 * centre:.3g} mm", fontsize=10)
     fig.savefig(path, dpi=dpi)
     plt.close(fig)

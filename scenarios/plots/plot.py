@@ -587,9 +587,7 @@ def main(argv=None):
         figures += [("gas", lambda p: plot_gas(run, p)),
                     ("gas_field", lambda p: plot_gas_field(run, p, args.snapshot))]
     figures += [(name, lambda p, draw=draw: draw(p, DPI)) for name, draw in analysis_figures(run)]
-    import h5py  # bed_plots.py still reads the run file itself; until it takes a carom.Output
-    raw = h5py.File(args.run, "r", locking=False)
-    figures += [(name, lambda p, draw=draw: draw(p, DPI)) for name, draw in bed_figures(raw)]
+    figures += [(name, lambda p, draw=draw: draw(p, DPI)) for name, draw in bed_figures(run)]
     for name, draw in figures:
         path = os.path.join(out, f"{stem}_{name}.png")
         try:

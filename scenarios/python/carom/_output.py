@@ -56,6 +56,10 @@ SERIES_UNITS = {
     # Sums of counts, velocities (m/s), their squares (m^2/s^2) and spins (rad/s) per section
     # and bin: scenarios/analysis/section_profiles.hpp.
     "profile_sums": "mixed",
+    # [analysis.bed] (scenarios/analysis/bed_measures.hpp; the units also stand as attributes of
+    # /analysis/bed): heights, the pressure balance, probe pressures, and sums of solid volume,
+    # mass and momentum per map bin.
+    "bed_height": "m", "bed_pressure": "Pa", "bed_probe_pressure": "Pa", "bed_map_sums": "mixed",
 }
 
 # Shapes of a row beyond (samples,): tensors as 3 x 3; per species pair S x S; per species and

@@ -60,6 +60,22 @@ std::pair<int, std::string> call(Command command) {
   return {code, errors.text()};
 }
 
+/// The options of `carom sweep` or `carom chart` (SweepOptions, ChartOptions: the same fields),
+/// with their cases run by the `carom` binary, not by Python.
+template <class Options>
+Options pool_options(const std::string& file, std::optional<std::string> out, std::size_t jobs, bool retry_failed,
+                     bool dry_run, bool quiet) {
+  Options options;
+  options.file = file;
+  options.out = std::move(out);
+  options.jobs = jobs;
+  options.retry_failed = retry_failed;
+  options.dry_run = dry_run;
+  options.quiet = quiet;
+  set_case_executable(CAROM_EXECUTABLE);
+  return options;
+}
+
 }  // namespace
 
 void bind_runs(py::module_& m) {
@@ -85,14 +101,7 @@ void bind_runs(py::module_& m) {
       "_sweep",
       [](const std::string& file, std::optional<std::string> out, std::size_t jobs, bool retry_failed, bool dry_run,
          bool quiet) {
-        SweepOptions options;
-        options.file = file;
-        options.out = std::move(out);
-        options.jobs = jobs;
-        options.retry_failed = retry_failed;
-        options.dry_run = dry_run;
-        options.quiet = quiet;
-        set_case_executable(CAROM_EXECUTABLE);  // the cases are `carom run` processes, not Python
+        const auto options = pool_options<SweepOptions>(file, std::move(out), jobs, retry_failed, dry_run, quiet);
         return call([&] { return run_sweep(options); });
       },
       py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("retry_failed"), py::arg("dry_run"),
@@ -101,14 +110,7 @@ void bind_runs(py::module_& m) {
       "_chart",
       [](const std::string& file, std::optional<std::string> out, std::size_t jobs, bool retry_failed, bool dry_run,
          bool quiet) {
-        ChartOptions options;
-        options.file = file;
-        options.out = std::move(out);
-        options.jobs = jobs;
-        options.retry_failed = retry_failed;
-        options.dry_run = dry_run;
-        options.quiet = quiet;
-        set_case_executable(CAROM_EXECUTABLE);
+        const auto options = pool_options<ChartOptions>(file, std::move(out), jobs, retry_failed, dry_run, quiet);
         return call([&] { return run_chart(options); });
       },
       py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("retry_failed"), py::arg("dry_run"),

@@ -10,6 +10,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "core/hdf5.hpp"
 
 namespace carom_cli_test {
 
@@ -70,5 +73,11 @@ inline const std::string kSmallGas =
     "[initial]\ntemperature = 1.0\n"
     "[time]\nend = 4.0\n"
     "[output]\nsnapshot_every = 0.5\nsample_every = 0.1\n";
+
+/// The time series `name` of a run file (its group "timeseries").
+inline std::vector<double> timeseries(const fs::path& run_file, const std::string& name) {
+  const carom::h5::File file = carom::h5::File::open(run_file.string(), false);
+  return file.open_group("timeseries").read<double>(name);
+}
 
 }  // namespace carom_cli_test

@@ -9,6 +9,9 @@
 
 namespace carom::flow_test {
 
+/// Time between flow steps in the flow tests, s.
+inline constexpr double kStep = 1e-3;
+
 /// A 2 cm x 2 cm x 10 cm box walled on every side, gravity -9.81 m/s^2 along z, one species of
 /// 2 mm glass beads (2500 kg/m^3).
 inline System duct() {

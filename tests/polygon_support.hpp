@@ -8,15 +8,12 @@
 
 #include "core/rng.hpp"
 #include "core/vec3.hpp"
+#include "tests/random_draws.hpp"
 
 namespace carom::polygon_test {
 
-inline double log_uniform(Rng& rng, double lo, double hi) {
-  return std::exp(rng.uniform(std::log(lo), std::log(hi)));
-}
-inline Vec3 unit(Rng& rng) {
-  return rng.normal3().normalized();
-}
+using test::log_uniform;
+using test::unit;
 
 /// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5): by the
 /// Voronoi regions of the vertices, edges and face, from barycentric coordinates.

@@ -23,6 +23,7 @@
 #include "core/relax_roots.hpp"
 #include "core/rng.hpp"
 #include "core/wall.hpp"
+#include "tests/random_draws.hpp"
 
 namespace carom {
 namespace {
@@ -32,17 +33,13 @@ using test::brute_force_contact;
 using test::compare;
 using test::GapFunction;
 using test::Sample;
+using test::kEps;
+using test::kGravityVector;
+using test::log_uniform;
+using test::random_flight;
+using test::unit;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kTwoPi = 6.283185307179586;
-const Vec3 kGravity(0.0, 0.0, -9.81);
-
-double log_uniform(Rng& rng, double lo, double hi) {
-  return std::exp(rng.uniform(std::log(lo), std::log(hi)));
-}
-Vec3 unit(Rng& rng) {
-  return rng.normal3().normalized();
-}
 Vec3 horizontal(double angle) {
   return Vec3(std::cos(angle), std::sin(angle), 0.0);
 }
@@ -87,12 +84,12 @@ TEST(ConeGeometry, Validate) {
   d.lower = Vec3(-1, -1, 0);
   d.upper = Vec3(1, 1, 2);
   const std::vector<Wall> hopper{Wall::cone("hopper", 0, 0, 0.5, 0.2, 1.5, 0.8)};  // apex z = 0.17
-  EXPECT_THROW(validate_walls(hopper, kGravity, d), std::invalid_argument);
+  EXPECT_THROW(validate_walls(hopper, kGravityVector, d), std::invalid_argument);
   const std::vector<Wall> fine{Wall::cone("hopper", 0, 0, 0.5, 0.6, 1.5, 0.8)};  // apex z = -2.5
-  EXPECT_NO_THROW(validate_walls(fine, kGravity, d));
+  EXPECT_NO_THROW(validate_walls(fine, kGravityVector, d));
   EXPECT_THROW(validate_walls(fine, Vec3(0.1, 0, -9.81), d), std::invalid_argument);
   d.periodic[2] = true;
-  EXPECT_THROW(validate_walls(fine, kGravity, d), std::invalid_argument);
+  EXPECT_THROW(validate_walls(fine, kGravityVector, d), std::invalid_argument);
   // The cylinder's check, unchanged.
   try {
     validate_walls({Wall::cylinder("pipe", 0, 0, 1)}, Vec3(1, 0, 0), d);
@@ -123,11 +120,11 @@ GapFunction locus_gap(const ConeCase& c) {
   };
 }
 
-RelaxFlight random_flight(Rng& rng, bool relax) {
-  if (!relax) return {0.0, rng.uniform() < 0.25 ? Vec3::Zero() : kGravity};
-  if (rng.uniform() < 0.2) return {0.0, kGravity};
-  const double rate = log_uniform(rng, 1.0, 1e4);
-  return {rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
+/// A ballistic flight (under gravity, or none at all a quarter of the time) or a relax flight
+/// (random_flight, a fifth of them under gravity alone).
+RelaxFlight cone_flight(Rng& rng, bool relax) {
+  if (!relax) return {0.0, rng.uniform() < 0.25 ? Vec3::Zero() : kGravityVector};
+  return random_flight(rng, 0.2);
 }
 
 // A cone about the axis through (ax, ay) with locus radius ~ r_mid at z = 0, half-angle
@@ -158,7 +155,7 @@ ConeCase random_case(Rng& rng, int family, bool relax) {
                Vec3::Zero(),
                RelaxFlight{},
                0.0};
-    c.f = random_flight(rng, relax);
+    c.f = cone_flight(rng, relax);
     c.horizon = relax ? log_uniform(rng, 1e-5, 1e-2) : log_uniform(rng, 1e-3, 1.0);
     const ConeWall& cone = c.cone;
     const Vec3 axis(cone.axis_x(), cone.axis_y(), 0.0);
@@ -301,7 +298,7 @@ TEST(ConeRelax, BallisticLimitMatchesTheQuartic) {
   int contacts = 0;
   for (int trial = 0; trial < 1000; ++trial) {
     ConeCase c = random_case(rng, trial % 5, false);
-    c.f = RelaxFlight{0.0, trial % 4 ? kGravity : Vec3::Zero()};
+    c.f = RelaxFlight{0.0, trial % 4 ? kGravityVector : Vec3::Zero()};
     const double quartic = predicted_time(c, false);
     const double relax = predicted_time(c, true);
     if (quartic == kNever) {
@@ -371,8 +368,8 @@ TEST(ConeContact, TouchingRules) {
   const Vec3 e(1, 0, 0);
   const Vec3 on = hopper.locus_at(z, a) * e + Vec3(0, 0, z);
   const Vec3 out = 0.1 * (e - Vec3(0, 0, 1)).normalized();  // along -n, outward
-  EXPECT_LE(hopper.ballistic_contact_time(on, out, a, kGravity), 1e-15);
-  const RelaxFlight ballistic{0.0, kGravity};
+  EXPECT_LE(hopper.ballistic_contact_time(on, out, a, kGravityVector), 1e-15);
+  const RelaxFlight ballistic{0.0, kGravityVector};
   EXPECT_LE(hopper.relax_contact_time(on, out, a, ballistic, 1e-2), 1e-15);
   // Moving in at 0.1 m/s: gravity brings it back (normal acceleration g cos(alpha)).
   const ConeCase back{hopper, a, on, -out, ballistic, 0.1};
@@ -394,7 +391,7 @@ TEST(ConeContact, TouchingRules) {
     const Vec3 r(offset, 0.0, 0.01);
     const double expected = std::sqrt(2.0 * height / 9.81);
     const double tolerance = 1e-12 + 2.0 * offset / std::sqrt(2.0 * 9.81 * height);
-    EXPECT_NEAR(hopper.ballistic_contact_time(r, Vec3::Zero(), a, kGravity), expected, tolerance)
+    EXPECT_NEAR(hopper.ballistic_contact_time(r, Vec3::Zero(), a, kGravityVector), expected, tolerance)
         << "offset " << offset;
     EXPECT_NEAR(hopper.relax_contact_time(r, Vec3::Zero(), a, ballistic, 1.0), expected,
                 tolerance + 1e-9)

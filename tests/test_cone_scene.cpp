@@ -9,9 +9,13 @@
 #include <vector>
 
 #include "scenarios/scene/scene.hpp"
+#include "tests/scene_support.hpp"
 #include "test_support.hpp"
 
 using namespace carom;
+using test::error_of;
+using test::expect_error;
+using test::replace;
 
 namespace {
 
@@ -45,30 +49,6 @@ const std::string kHopper =
     "collapse = { model = \"tc\", contact_time = 1e-5 }\n"  // 24
     "[time]\n"                                              // 25
     "end = 0.15\n";                                         // 26
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
-/// The SceneError message of parsing and building (empty when the scene is fine).
-std::string error_of(const std::string& text) {
-  try {
-    Scene scene = parse_scene(text, "bad.toml");
-    build_initial_state(scene);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-void expect_error(const std::string& text, const std::vector<std::string>& fragments) {
-  const std::string message = error_of(text);
-  ASSERT_FALSE(message.empty()) << "accepted:\n" << text;
-  for (const auto& f : fragments)
-    EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-}
 
 }  // namespace
 

@@ -21,8 +21,6 @@ using namespace carom::flow_test;
 
 namespace {
 
-constexpr double kStep = 1e-3;  // s between flow steps in these tests
-
 /// An outlet at the floor: centres below z = 0.005 leave.
 Outflow floor_outlet() {
   return Outflow{"floor", 2, 0.005, -1};

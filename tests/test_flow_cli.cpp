@@ -37,11 +37,6 @@ std::string duct() {
   return kScenes + "/duct_flow.toml";
 }
 
-std::vector<double> series(const fs::path& run, const char* name) {
-  const carom::h5::File file = carom::h5::File::open((run / "run.h5").string(), false);
-  return file.open_group("timeseries").read<double>(name);
-}
-
 }  // namespace
 
 TEST_F(Cli, DuctFlowWithEveryMethod) {
@@ -54,12 +49,13 @@ TEST_F(Cli, DuctFlowWithEveryMethod) {
                     "\"' --set time.end=0.45 --out " + out + " --quiet"),
               0)
         << out_;
-    const fs::path run = dir_ / out;
-    const auto t = series(run, "time"), in = series(run, "entered_mass"),
-               out_mass = series(run, "left_mass");
-    const auto entered = series(run, "entered"), left = series(run, "left"),
-               present = series(run, "particles_present");
-    const auto total = series(run, "total_energy"), kinetic = series(run, "kinetic_translational");
+    const fs::path run = dir_ / out, run_file = run / "run.h5";
+    const auto t = timeseries(run_file, "time"), in = timeseries(run_file, "entered_mass"),
+               out_mass = timeseries(run_file, "left_mass");
+    const auto entered = timeseries(run_file, "entered"), left = timeseries(run_file, "left"),
+               present = timeseries(run_file, "particles_present");
+    const auto total = timeseries(run_file, "total_energy"),
+               kinetic = timeseries(run_file, "kinetic_translational");
     ASSERT_EQ(t.size(), 46u);
     double kinetic_max = 0, drift = 0, steady = 0;
     int steady_samples = 0;
@@ -95,7 +91,8 @@ TEST_F(Cli, DuctFlowResumesBitForBit) {
     for (const char* name :
          {"time", "particles_present", "entered_mass", "left_mass", "particle_seconds",
           "total_energy", "kinetic_translational", "flow_energy", "pair_collisions"}) {
-      const auto a = series(dir_ / whole, name), b = series(dir_ / part, name);
+      const auto a = timeseries(dir_ / whole / "run.h5", name),
+                 b = timeseries(dir_ / part / "run.h5", name);
       EXPECT_FALSE(a.empty()) << name;
       EXPECT_EQ(a, b) << name;
     }

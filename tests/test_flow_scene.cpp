@@ -7,8 +7,11 @@
 #include <vector>
 
 #include "scenarios/scene/scene.hpp"
+#include "tests/scene_support.hpp"
 
 using namespace carom;
+using test::expect_parse_error;
+using test::replace;
 
 namespace {
 
@@ -41,24 +44,6 @@ const std::string kDuct =
     "side = \"below\"\n"                   // 24
     "[time]\n"                             // 25
     "end = 0.1\n";                         // 26
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
-/// Expects parse_scene to refuse `text` with a message holding every fragment.
-void expect_error(const std::string& text, const std::vector<std::string>& fragments) {
-  try {
-    parse_scene(text, "bad.toml");
-    ADD_FAILURE() << "accepted:\n" << text;
-  } catch (const SceneError& e) {
-    const std::string message = e.what();
-    for (const auto& f : fragments)
-      EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-  }
-}
 
 }  // namespace
 
@@ -95,58 +80,60 @@ TEST(FlowScene, IntervalDefaultsToTheGasStepAndMustBeAWholeMultipleOfIt) {
       kDuct + "[gas]\ncoupling = \"one_way\"\ncells = [1, 1, 10]\ntime_step = 2e-4\n";  // 27-30
   EXPECT_EQ(parse_scene(gas, "gas.toml").flow.interval, 2e-4);
   EXPECT_DOUBLE_EQ(parse_scene(gas + "[flow]\ninterval = 1e-3\n", "gas.toml").flow.interval, 1e-3);
-  expect_error(gas + "[flow]\ninterval = 3e-4\n",
-               {"bad.toml:32", "flow.interval = 3e-04", "whole multiple of the gas time step",
-                "gas.time_step = 2e-04"});
-  expect_error(gas + "[flow]\ninterval = 1e-4\n",
-               {"bad.toml:32", "flow.interval", "whole multiple"});
-  expect_error(kDuct + "[flow]\ninterval = 0.0\n",
-               {"bad.toml:28", "flow.interval = 0 ", "(0, inf)"});
-  expect_error(kDuct + "[flow]\nintervall = 1e-3\n",
-               {"bad.toml:28", "unknown key 'flow.intervall'", "did you mean 'flow.interval'"});
+  expect_parse_error(gas + "[flow]\ninterval = 3e-4\n",
+                     {"bad.toml:32", "flow.interval = 3e-04", "whole multiple of the gas time step",
+                      "gas.time_step = 2e-04"});
+  expect_parse_error(gas + "[flow]\ninterval = 1e-4\n",
+                     {"bad.toml:32", "flow.interval", "whole multiple"});
+  expect_parse_error(kDuct + "[flow]\ninterval = 0.0\n",
+                     {"bad.toml:28", "flow.interval = 0 ", "(0, inf)"});
+  expect_parse_error(
+      kDuct + "[flow]\nintervall = 1e-3\n",
+      {"bad.toml:28", "unknown key 'flow.intervall'", "did you mean 'flow.interval'"});
 }
 
 TEST(FlowScene, MistakesNameFileLineKeyAndRange) {
   // Planes: strictly inside the domain, on a walled axis.
-  expect_error(replace(kDuct, "plane = 0.095", "plane = 0.1"),
-               {"bad.toml:14", "inflow[0].plane = 0.1", "not strictly inside", "(0, 0.1)"});
-  expect_error(replace(kDuct, "plane = 0.005", "plane = -0.5"),
-               {"bad.toml:23", "outflow[0].plane = -0.5", "not strictly inside"});
-  expect_error(replace(kDuct, "axis = \"z\"\nplane = 0.005", "axis = \"y\"\nplane = 0.005"),
-               {"bad.toml:22", "outflow[0].axis = \"y\"", "periodic axis"});
-  expect_error(replace(kDuct, "axis = \"z\"\nplane = 0.095", "axis = \"w\"\nplane = 0.095"),
-               {"bad.toml:13", "inflow[0].axis = \"w\"", "\"x\", \"y\", \"z\""});
+  expect_parse_error(replace(kDuct, "plane = 0.095", "plane = 0.1"),
+                     {"bad.toml:14", "inflow[0].plane = 0.1", "not strictly inside", "(0, 0.1)"});
+  expect_parse_error(replace(kDuct, "plane = 0.005", "plane = -0.5"),
+                     {"bad.toml:23", "outflow[0].plane = -0.5", "not strictly inside"});
+  expect_parse_error(replace(kDuct, "axis = \"z\"\nplane = 0.005", "axis = \"y\"\nplane = 0.005"),
+                     {"bad.toml:22", "outflow[0].axis = \"y\"", "periodic axis"});
+  expect_parse_error(replace(kDuct, "axis = \"z\"\nplane = 0.095", "axis = \"w\"\nplane = 0.095"),
+                     {"bad.toml:13", "inflow[0].axis = \"w\"", "\"x\", \"y\", \"z\""});
   // Sides, species, rates.
-  expect_error(replace(kDuct, "side = \"below\"\nmin", "min"),
-               {"bad.toml:10", "inflow[0].side", "missing", "\"above\", \"below\""});
-  expect_error(replace(kDuct, "side = \"below\"\n[time]", "side = \"down\"\n[time]"),
-               {"bad.toml:24", "outflow[0].side = \"down\"", "\"above\", \"below\""});
-  expect_error(replace(kDuct, "species = \"bead\"", "species = \"beads\""),
-               {"bad.toml:12", "inflow[0].species = \"beads\"", "did you mean \"bead\""});
-  expect_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = -1.0"),
-               {"bad.toml:18", "inflow[0].mass_flow = -1 ", "(0, inf)", "kg/s"});
-  expect_error(
+  expect_parse_error(replace(kDuct, "side = \"below\"\nmin", "min"),
+                     {"bad.toml:10", "inflow[0].side", "missing", "\"above\", \"below\""});
+  expect_parse_error(replace(kDuct, "side = \"below\"\n[time]", "side = \"down\"\n[time]"),
+                     {"bad.toml:24", "outflow[0].side = \"down\"", "\"above\", \"below\""});
+  expect_parse_error(replace(kDuct, "species = \"bead\"", "species = \"beads\""),
+                     {"bad.toml:12", "inflow[0].species = \"beads\"", "did you mean \"bead\""});
+  expect_parse_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = -1.0"),
+                     {"bad.toml:18", "inflow[0].mass_flow = -1 ", "(0, inf)", "kg/s"});
+  expect_parse_error(
       replace(kDuct, "velocity_spread = [0.1, 0.1, 0.2]", "velocity_spread = [0.1, -0.1, 0.2]"),
       {"bad.toml:20", "inflow[0].velocity_spread", "[0, inf)"});
-  expect_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\nattempts = 0"),
-               {"bad.toml:19", "inflow[0].attempts = 0", "[1, 1000000]"});
+  expect_parse_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\nattempts = 0"),
+                     {"bad.toml:19", "inflow[0].attempts = 0", "[1, 1000000]"});
   // The rectangle and the slab.
-  expect_error(replace(kDuct, "max = [0.02, 0.01, 0.0]", "max = [0.03, 0.01, 0.0]"),
-               {"bad.toml:17", "inflow[0].max = ", "not inside the domain", "[0, 0.02]"});
-  expect_error(replace(kDuct, "max = [0.02, 0.01, 0.0]", "max = [0.0, 0.01, 0.0]"),
-               {"bad.toml:17", "inflow[0].max", "must exceed min"});
-  expect_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\ndepth = 0.001"),
-               {"bad.toml:19", "inflow[0].depth = 0.001", "too thin for one particle", "0.002 m"});
-  expect_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\ndepth = 0.0999"),
-               {"bad.toml:19", "inflow[0].depth = 0.0999", "reaches outside the domain"});
-  expect_error(replace(kDuct, "plane = 0.005", "plane = 0.093"),
-               {"bad.toml:14", "inflow[0].plane = 0.095", "beyond outflow \"outflow_1\""});
+  expect_parse_error(replace(kDuct, "max = [0.02, 0.01, 0.0]", "max = [0.03, 0.01, 0.0]"),
+                     {"bad.toml:17", "inflow[0].max = ", "not inside the domain", "[0, 0.02]"});
+  expect_parse_error(replace(kDuct, "max = [0.02, 0.01, 0.0]", "max = [0.0, 0.01, 0.0]"),
+                     {"bad.toml:17", "inflow[0].max", "must exceed min"});
+  expect_parse_error(
+      replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\ndepth = 0.001"),
+      {"bad.toml:19", "inflow[0].depth = 0.001", "too thin for one particle", "0.002 m"});
+  expect_parse_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\ndepth = 0.0999"),
+                     {"bad.toml:19", "inflow[0].depth = 0.0999", "reaches outside the domain"});
+  expect_parse_error(replace(kDuct, "plane = 0.005", "plane = 0.093"),
+                     {"bad.toml:14", "inflow[0].plane = 0.095", "beyond outflow \"outflow_1\""});
   // Unknown keys, duplicate names.
-  expect_error(replace(kDuct, "mass_flow = 0.002", "mass_rate = 0.002"),
-               {"bad.toml:10", "inflow[0].mass_flow", "missing"});
-  expect_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\nrate = 1"),
-               {"bad.toml:19", "unknown key 'inflow[0].rate'"});
-  expect_error(
+  expect_parse_error(replace(kDuct, "mass_flow = 0.002", "mass_rate = 0.002"),
+                     {"bad.toml:10", "inflow[0].mass_flow", "missing"});
+  expect_parse_error(replace(kDuct, "mass_flow = 0.002", "mass_flow = 0.002\nrate = 1"),
+                     {"bad.toml:19", "unknown key 'inflow[0].rate'"});
+  expect_parse_error(
       kDuct + "[[outflow]]\nname = \"outflow_1\"\naxis = \"x\"\nplane = 0.001\nside = \"below\"\n",
       {"bad.toml:28", "outflow[1].name = \"outflow_1\"", "earlier outflow"});
 }

@@ -19,8 +19,6 @@ using namespace carom::flow_test;
 
 namespace {
 
-constexpr double kStep = 1e-3;  // s between flow steps
-
 /// The obviously correct test: gap >= 0 to every sphere (periodic distance: the minimum image),
 /// every wall and the box faces on walled axes.
 bool free_brute_force(const Vec3& r, double a, const ParticleStore& p, const System& system) {

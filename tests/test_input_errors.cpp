@@ -17,8 +17,11 @@
 #include "scenarios/scene/fill_capacity.hpp"
 #include "scenarios/scene/overrides.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "tests/scene_support.hpp"
 
 using namespace carom;
+using test::error_of;
+using test::replace;
 namespace fs = std::filesystem;
 
 namespace {
@@ -35,23 +38,6 @@ const std::string kBox =
     "fill = { count = 20 }\n"     // 8
     "[time]\n"                    // 9
     "end = 0.1\n";                // 10
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
-/// The SceneError message of building the scene ("" when it is fine).
-std::string build_error(const std::string& text) {
-  try {
-    Scene scene = parse_scene(text, "bad.toml");
-    build_initial_state(scene);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 /// The number after `prefix` in `text` (0 when absent).
 std::size_t number_after(const std::string& text, const std::string& prefix) {
@@ -137,18 +123,18 @@ TEST(InputErrors, OverrideFromASweepFileNamesItsLine) {
 // 0.64 of 1e-6 m^3 over (pi/6) 1e-9 m^3 = 1222.3.
 TEST(InputErrors, ImpossibleRandomFillIsRefusedAtOnce) {
   const auto start = std::chrono::steady_clock::now();
-  const std::string message = build_error(replace(kBox, "count = 20", "count = 100000000"));
+  const std::string message = error_of(replace(kBox, "count = 20", "count = 100000000"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_NE(message.find("bad.toml:8: species[0].fill.count = 100000000"), std::string::npos) << message;
   EXPECT_NE(message.find("at most 1222 fit"), std::string::npos) << message;
   EXPECT_NE(message.find("random close packing"), std::string::npos) << message;
   EXPECT_LT(seconds, 1.0) << "refused, but only after " << seconds << " s";
   // A volume fraction above random close packing, and a mass fraction that implies too many.
-  EXPECT_NE(build_error(replace(kBox, "fill = { count = 20 }", "fill = { volume_fraction = 0.7 }"))
+  EXPECT_NE(error_of(replace(kBox, "fill = { count = 20 }", "fill = { volume_fraction = 0.7 }"))
                 .find("species[0].fill.volume_fraction = 0.7"),
             std::string::npos);
   // Below the bound the placement is still what decides (and names the lattice as the remedy).
-  EXPECT_NE(build_error(replace(kBox, "count = 20", "count = 1200")).find("placed only"), std::string::npos);
+  EXPECT_NE(error_of(replace(kBox, "count = 20", "count = 1200")).find("placed only"), std::string::npos);
 }
 
 // For a lattice fill the bound is the lattice itself: the count the message gives is placed,
@@ -156,7 +142,7 @@ TEST(InputErrors, ImpossibleRandomFillIsRefusedAtOnce) {
 TEST(InputErrors, LatticeFillCapacityIsExact) {
   for (const std::string arrangement : {"fcc", "cubic"}) {
     SCOPED_TRACE(arrangement);
-    const std::string message = build_error(
+    const std::string message = error_of(
         replace(kBox, "count = 20", "count = 100000000, arrangement = \"" + arrangement + "\""));
     EXPECT_NE(message.find("bad.toml:8: species[0].fill.count = 100000000"), std::string::npos) << message;
     EXPECT_NE(message.find(arrangement + " lattice at contact spacing"), std::string::npos) << message;
@@ -164,10 +150,10 @@ TEST(InputErrors, LatticeFillCapacityIsExact) {
     ASSERT_GT(capacity, 100u) << message;
     const std::string fits = replace(kBox, "count = 20",
                                      "count = " + std::to_string(capacity) + ", arrangement = \"" + arrangement + "\"");
-    EXPECT_EQ(build_error(fits), "") << "the largest count said to fit does not";
+    EXPECT_EQ(error_of(fits), "") << "the largest count said to fit does not";
     Scene scene = parse_scene(fits, "ok.toml");
     EXPECT_EQ(fill_capacity(scene, 0), capacity);
-    const std::string one_more = build_error(replace(
+    const std::string one_more = error_of(replace(
         kBox, "count = 20", "count = " + std::to_string(capacity + 1) + ", arrangement = \"" + arrangement + "\""));
     EXPECT_NE(one_more.find("so at most " + std::to_string(capacity) + " fit"), std::string::npos) << one_more;
   }

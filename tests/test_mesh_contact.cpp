@@ -16,6 +16,7 @@
 #include "core/rng.hpp"
 #include "core/walls/mesh.hpp"
 #include "polygon_support.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
@@ -29,7 +30,7 @@ using test::compare;
 using test::GapFunction;
 using test::Sample;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using test::kEps;
 
 /// The closest point of the triangles to p, by Ericson over every triangle (no culls).
 Vec3 oracle_closest(const std::vector<Triangle>& triangles, const Vec3& p) {

@@ -10,8 +10,10 @@
 #include "events/event_driven/engine.hpp"
 #include "scenarios/run/run_output.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "tests/scene_support.hpp"
 
 using namespace carom;
+using test::error_of;
 namespace fs = std::filesystem;
 
 namespace {
@@ -70,16 +72,6 @@ std::vector<std::size_t> id_order(const EventDrivenEngine& sim) {
   std::vector<std::size_t> order(sim.particle_count());
   for (std::size_t i = 0; i < order.size(); ++i) order[sim.system().particles.id[i]] = i;
   return order;
-}
-
-std::string error_of(const std::string& text, const std::string& file = "bad.toml") {
-  try {
-    Scene scene = parse_scene(text, file);
-    build_initial_state(scene);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 void expect_fragments(const std::string& message, const std::vector<std::string>& fragments) {

@@ -23,6 +23,7 @@
 #include "contact_oracle.hpp"
 #include "core/wall.hpp"
 #include "polygon_support.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
@@ -37,8 +38,8 @@ using test::compare;
 using test::GapFunction;
 using test::Sample;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-const Vec3 kGravity(0.0, 0.0, -9.81);
+using carom::test::kEps;
+using carom::test::kGravityVector;
 
 // --- contact times against the scan ----------------------------------------------------------
 
@@ -60,7 +61,7 @@ GapFunction oracle_gap(const PlateCase& c) {
 }
 
 RelaxFlight random_flight(Rng& rng, bool relax) {
-  const Vec3 g = rng.uniform() < 0.5 ? kGravity : Vec3(9.81 * unit(rng));
+  const Vec3 g = rng.uniform() < 0.5 ? kGravityVector : Vec3(9.81 * unit(rng));
   if (!relax) return {0.0, rng.uniform() < 0.25 ? Vec3::Zero() : g};
   if (rng.uniform() < 0.2) return {0.0, g};
   const double rate = log_uniform(rng, 1.0, 1e4);
@@ -266,8 +267,8 @@ TEST(PolygonBallistic, OverTheFaceItIsThePlane) {
   for (int trial = 0; trial < 200; ++trial) {
     const Vec3 r(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(0.02, 0.2));
     const Vec3 v(rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2), rng.uniform(-1.0, 1.0));
-    const double expected = plane.ballistic_contact_time(r, v, 0.01, kGravity);
-    EXPECT_NEAR(plate.ballistic_contact_time(r, v, 0.01, kGravity), expected, 1e-12 * expected);
+    const double expected = plane.ballistic_contact_time(r, v, 0.01, kGravityVector);
+    EXPECT_NEAR(plate.ballistic_contact_time(r, v, 0.01, kGravityVector), expected, 1e-12 * expected);
   }
 }
 
@@ -283,10 +284,10 @@ TEST(PolygonBallistic, AfterABounceTheNextContactIsTheNextOne) {
   for (int trial = 0; trial < 300; ++trial) {
     const auto [q, e] = random_feature_point(rng, plate, 1 + trial % 3);
     for (double hair : {-1e-15, 0.0, 1e-15}) {
-      PlateCase c{plate, a, q + (a + hair) * e, Vec3::Zero(), RelaxFlight{0.0, kGravity}, 1.0};
+      PlateCase c{plate, a, q + (a + hair) * e, Vec3::Zero(), RelaxFlight{0.0, kGravityVector}, 1.0};
       c.v = rng.uniform(0.05, 1.0) * e + rng.uniform(0.0, 0.3) * unit(rng);
       if (!(c.v.dot(e) > 0.05)) continue;
-      const double predicted = plate.ballistic_contact_time(c.r, c.v, a, kGravity);
+      const double predicted = plate.ballistic_contact_time(c.r, c.v, a, kGravityVector);
       EXPECT_GT(predicted, 1e-6) << "trial " << trial;
       // The scan from just after the bounce (the state at 1e-7 s, clear of the plate).
       const GapFunction G = oracle_gap(c);

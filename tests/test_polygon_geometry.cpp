@@ -10,6 +10,7 @@
 
 #include "core/wall.hpp"
 #include "polygon_support.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
@@ -19,7 +20,7 @@ using polygon_test::oracle_closest;
 using polygon_test::random_polygon;
 using polygon_test::unit;
 
-const Vec3 kGravity(0.0, 0.0, -9.81);
+using carom::test::kGravityVector;
 
 // The gap against the oracle's distance (to 1e-14 of the lengths: a few roundings) and against
 // a fine sampling of the polygon (a triangular grid of 150 x 150 per fan triangle: the sampled
@@ -108,14 +109,14 @@ TEST(PolygonGeometry, ValidateOnPeriodicAxes) {
   d.lower = Vec3(0, 0, 0);
   d.upper = Vec3(1, 2, 3);
   const PolygonWall small({Vec3(0.2, 0.2, 1), Vec3(0.8, 0.2, 1), Vec3(0.5, 0.8, 1.5)});
-  EXPECT_NO_THROW(small.validate("baffle", kGravity, d));
+  EXPECT_NO_THROW(small.validate("baffle", kGravityVector, d));
   d.periodic[1] = true;
-  EXPECT_THROW(small.validate("baffle", kGravity, d), std::invalid_argument);
+  EXPECT_THROW(small.validate("baffle", kGravityVector, d), std::invalid_argument);
   // An inclined strip across y, from y = 0 to 2.
   const PolygonWall strip({Vec3(0.1, 0, 1), Vec3(0.6, 0, 2), Vec3(0.6, 2, 2), Vec3(0.1, 2, 1)});
-  EXPECT_NO_THROW(strip.validate("side", kGravity, d));
+  EXPECT_NO_THROW(strip.validate("side", kGravityVector, d));
   const PolygonWall skew({Vec3(0.1, 0, 1), Vec3(0.6, 0, 2), Vec3(0.7, 2, 2), Vec3(0.2, 2, 1)});
-  EXPECT_THROW(skew.validate("side", kGravity, d), std::invalid_argument);
+  EXPECT_THROW(skew.validate("side", kGravityVector, d), std::invalid_argument);
 }
 
 }  // namespace

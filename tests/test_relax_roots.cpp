@@ -27,19 +27,16 @@
 #include "core/relax_roots.hpp"
 #include "core/rng.hpp"
 #include "core/roots.hpp"
+#include "tests/random_draws.hpp"
 
 namespace carom {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-const Vec3 kGravity(0.0, 0.0, -9.81);
-
-double log_uniform(Rng& rng, double lo, double hi) {
-  return std::exp(rng.uniform(std::log(lo), std::log(hi)));
-}
-Vec3 unit(Rng& rng) {
-  return rng.normal3().normalized();
-}
+using test::kEps;
+using test::kGravityVector;
+using test::log_uniform;
+using test::random_flight;
+using test::unit;
 
 // --- phi functions and the flight ---------------------------------------------------------
 
@@ -82,8 +79,8 @@ TEST(RelaxPhi, MatchesLongDoubleReference) {
 // that rounds identically), so relax and ballistic runs agree exactly without drag.
 TEST(RelaxPhi, ZeroRateIsTheBallisticParabolaExactly) {
   Rng rng(12);
-  const BallisticFlight ballistic{kGravity};
-  const RelaxFlight relax{0.0, kGravity};
+  const BallisticFlight ballistic{kGravityVector};
+  const RelaxFlight relax{0.0, kGravityVector};
   for (int k = 0; k < 1000; ++k) {
     const Vec3 v0 = rng.normal3();
     const double s = log_uniform(rng, 1e-9, 1.0);
@@ -99,7 +96,7 @@ TEST(RelaxFlight, MatchesFineRk4Integration) {
   Rng rng(13);
   for (int k = 0; k < 40; ++k) {
     const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
-    const RelaxFlight f{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
+    const RelaxFlight f{rate, kGravityVector + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
     const Vec3 v0 = log_uniform(rng, 0.01, 10.0) * unit(rng);
     const double s = log_uniform(rng, 1e-5, 1e-2);
     const int steps = int(std::ceil(std::max(1e3, 1e3 * rate * s)));
@@ -136,13 +133,13 @@ TEST(RelaxFlight, GasWorkIsTheIntegralOfTheGasForcesPower) {
   Rng rng(17);
   for (int k = 0; k < 40; ++k) {
     const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
-    const RelaxFlight f{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng) +
+    const RelaxFlight f{rate, kGravityVector + rate * log_uniform(rng, 0.01, 10.0) * unit(rng) +
                                   log_uniform(rng, 0.1, 10.0) * unit(rng)};
     const Vec3 v0 = log_uniform(rng, 0.01, 10.0) * unit(rng);
     const double s = log_uniform(rng, 1e-5, 1e-2);
     const int steps = 2 * int(std::ceil(std::max(1e3, 1e3 * rate * s)));
     const long double h = (long double)s / steps;
-    const V drive = f.drive.cast<long double>(), g = kGravity.cast<long double>();
+    const V drive = f.drive.cast<long double>(), g = kGravityVector.cast<long double>();
     const long double k_rate = rate;
     auto acc = [&](const V& w) { return (drive - k_rate * w).eval(); };
     auto power = [&](const V& w) { return (acc(w) - g).dot(w); };
@@ -156,9 +153,9 @@ TEST(RelaxFlight, GasWorkIsTheIntegralOfTheGasForcesPower) {
     }
     integral *= h / 3.0L;
     Vec3 r{0.1, -0.2, 0.3}, u = v0;
-    const double work = f.move_booking_gas_work(r, u, s, kGravity);
+    const double work = f.move_booking_gas_work(r, u, s, kGravityVector);
     const double scale =
-        (f.acceleration(v0) - kGravity).norm() * (v0.norm() + f.acceleration(v0).norm() * s) * s;
+        (f.acceleration(v0) - kGravityVector).norm() * (v0.norm() + f.acceleration(v0).norm() * s) * s;
     EXPECT_NEAR(work, (double)integral, 1e-9 * scale) << "case " << k;
     EXPECT_EQ(r, Vec3(Vec3{0.1, -0.2, 0.3} + f.displacement(v0, s)));
     EXPECT_EQ(u, f.velocity(v0, s));
@@ -178,7 +175,7 @@ TEST(RelaxFlight, ReachBoundCoversTheFlight) {
   Rng rng(19);
   for (int k = 0; k < 400; ++k) {
     const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
-    const RelaxFlight f{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
+    const RelaxFlight f{rate, kGravityVector + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
     // Every eighth velocity along one axis: there the sum of magnitudes is the length itself.
     const Vec3 v0 = k % 8 == 3 ? Vec3(0, 0, -log_uniform(rng, 0.01, 10.0))
                                : Vec3(log_uniform(rng, 0.01, 10.0) * unit(rng));
@@ -203,7 +200,7 @@ TEST(RelaxFlight, BoundsOfASetCoverEveryMember) {
   for (int k = 0; k < 50; ++k) {
     const double rate = k % 5 == 0 ? 0.0 : log_uniform(rng, 1.0, 1e4);
     flights.push_back(
-        RelaxFlight{rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)});
+        RelaxFlight{rate, kGravityVector + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)});
     bounds.include(flights.back());
   }
   for (int k = 0; k < 400; ++k) {
@@ -332,12 +329,6 @@ GapFunction pair_function(const PairCase& c) {
   };
 }
 
-RelaxFlight random_flight(Rng& rng, double zero_rate_probability) {
-  if (rng.uniform() < zero_rate_probability) return {0.0, kGravity};
-  const double rate = log_uniform(rng, 1.0, 1e4);
-  return {rate, kGravity + rate * log_uniform(rng, 0.01, 10.0) * unit(rng)};
-}
-
 // Random pair kinematics; dr set by the family.
 PairCase random_pair(Rng& rng, int family) {
   PairCase c;
@@ -451,7 +442,7 @@ TEST(RelaxPair, BallisticLimitMatchesSphereContactTime) {
   int contacts = 0;
   for (int trial = 0; trial < 1000; ++trial) {
     PairCase c = random_pair(rng, 3);
-    c.fa = c.fb = RelaxFlight{0.0, kGravity};
+    c.fa = c.fb = RelaxFlight{0.0, kGravityVector};
     // Two in three aimed at contact at t in [0, 1.2 horizon], the rest anywhere nearby.
     const Vec3 u = c.va - c.vb;
     Vec3 n = unit(rng);
@@ -485,7 +476,7 @@ TEST(RelaxPair, BallisticLimitMatchesSphereContactTime) {
 // Touching pairs: approaching returns 0; separating does not (kNever, or the return contact
 // when the relative acceleration brings the pair back).
 TEST(RelaxPair, TouchingRules) {
-  const RelaxFlight ballistic{0.0, kGravity}, dragged{1e3, kGravity + 1e3 * Vec3(0, 0, 2.0)};
+  const RelaxFlight ballistic{0.0, kGravityVector}, dragged{1e3, kGravityVector + 1e3 * Vec3(0, 0, 2.0)};
   const Vec3 up(0, 0, 1), zero = Vec3::Zero();
   const double contact = 1e-3;
   EXPECT_EQ(
@@ -664,7 +655,7 @@ TEST(RelaxCylinder, BrakedDriftThenTheWallsCurvature) {
 // At the wall: moving outward returns 0; moving inward does not (kNever without horizontal
 // forces); at rest horizontally never touches.
 TEST(RelaxCylinder, TouchingRules) {
-  const RelaxFlight ballistic{0.0, kGravity};
+  const RelaxFlight ballistic{0.0, kGravityVector};
   const double reach = 0.01;
   EXPECT_EQ(relax_cylinder_contact_time(Vec3(reach, 0, 0), Vec3(0.1, 0, 0), ballistic, reach, 1e-2),
             0.0);

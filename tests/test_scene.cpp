@@ -11,8 +11,12 @@
 #include "events/method_factory.hpp"
 #include "scenarios/chart/chart_spec.hpp"
 #include "scenarios/scene/scene.hpp"
+#include "tests/scene_support.hpp"
 
 using namespace carom;
+using test::error_of;
+using test::expect_error;
+using test::replace;
 
 namespace {
 
@@ -28,31 +32,6 @@ const std::string kBase =
     "fill = { count = 20 }\n"                    // 8
     "[time]\n"                                   // 9
     "end = 0.1\n";                               // 10
-
-/// Parses and builds; returns the SceneError message ("" when the scene is fine).
-std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  try {
-    Scene scene = parse_scene(text, "bad.toml", overrides);
-    build_initial_state(scene);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-/// The message must contain every fragment (file:line, key, value, allowed range ...).
-void expect_error(const std::string& text, const std::vector<std::string>& fragments,
-                  const std::vector<std::string>& overrides = {}) {
-  const std::string message = error_of(text, overrides);
-  ASSERT_FALSE(message.empty()) << "accepted:\n" << text;
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-}
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
 
 }  // namespace
 

@@ -7,11 +7,12 @@
 #include <random>
 
 #include "scenarios/analysis/section_profiles.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using carom::test::kPi;
 
 ProfileGeometry duct() {
   ProfileGeometry g;

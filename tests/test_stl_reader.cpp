@@ -61,7 +61,7 @@ std::string binary(const std::vector<Triangle>& triangles, std::uint32_t count) 
 }
 
 /// The message of the StlError that parsing `bytes` throws ("" if none).
-std::string error_of(const std::string& bytes) {
+std::string stl_error(const std::string& bytes) {
   try {
     parse_stl(bytes, "part.stl");
   } catch (const StlError& e) {
@@ -110,34 +110,34 @@ TEST(StlReader, ReadsAFileAndNamesAMissingOne) {
 TEST(StlReader, TruncatedOrMiscountedBinaryIsRefused) {
   std::string bytes = binary(tetrahedron(), 4);
   bytes[0] = 'X';  // not "solid": surely binary
-  const std::string truncated = error_of(bytes.substr(0, bytes.size() - 7));
+  const std::string truncated = stl_error(bytes.substr(0, bytes.size() - 7));
   EXPECT_NE(truncated.find("part.stl"), std::string::npos) << truncated;
   EXPECT_NE(truncated.find("truncated"), std::string::npos) << truncated;
   EXPECT_NE(truncated.find("4 triangles"), std::string::npos) << truncated;
   std::string miscounted = binary(tetrahedron(), 3);  // 4 written, count says 3
   miscounted[0] = 'X';
-  const std::string message = error_of(miscounted);
+  const std::string message = stl_error(miscounted);
   EXPECT_NE(message.find("does not match its triangle count"), std::string::npos) << message;
   EXPECT_NE(message.find("3 triangles"), std::string::npos) << message;
-  EXPECT_NE(error_of("XY").find("neither ASCII STL"), std::string::npos);
+  EXPECT_NE(stl_error("XY").find("neither ASCII STL"), std::string::npos);
 }
 
 TEST(StlReader, DegenerateAndNaNTrianglesAreRefused) {
   std::vector<Triangle> flat = tetrahedron();
   flat[2][2] = 0.5 * (flat[2][0] + flat[2][1]);  // vertex on the opposite edge: zero area
   for (const std::string& bytes : {ascii(flat), binary(flat, 4)}) {
-    const std::string message = error_of(bytes);
+    const std::string message = stl_error(bytes);
     EXPECT_NE(message.find("triangle 3"), std::string::npos) << message;
     EXPECT_NE(message.find("zero area"), std::string::npos) << message;
   }
-  EXPECT_NE(error_of(ascii(flat)).find("part.stl:22:"), std::string::npos)  // its endfacet
-      << error_of(ascii(flat));
+  EXPECT_NE(stl_error(ascii(flat)).find("part.stl:22:"), std::string::npos)  // its endfacet
+      << stl_error(ascii(flat));
   std::vector<Triangle> nan = tetrahedron();
   nan[1][1].y() = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(error_of(binary(nan, 4)).find("not a finite number"), std::string::npos);
+  EXPECT_NE(stl_error(binary(nan, 4)).find("not a finite number"), std::string::npos);
   std::string text = ascii(tetrahedron());
   text.replace(text.find("vertex 1.000000"), 15, "vertex nan");
-  const std::string message = error_of(text);
+  const std::string message = stl_error(text);
   EXPECT_NE(message.find("part.stl:6:"), std::string::npos) << message;
   EXPECT_NE(message.find("not a finite number"), std::string::npos) << message;
 }
@@ -146,22 +146,22 @@ TEST(StlReader, MalformedAsciiNamesTheLine) {
   const std::string good = ascii(tetrahedron());
   std::string typo = good;
   typo.replace(typo.find("outer loop"), 10, "outer lop");
-  EXPECT_NE(error_of(typo).find("part.stl:3: 'outer' must be followed by 'loop'"),
+  EXPECT_NE(stl_error(typo).find("part.stl:3: 'outer' must be followed by 'loop'"),
             std::string::npos)
-      << error_of(typo);
+      << stl_error(typo);
   std::string unknown = good;
   unknown.replace(unknown.find("endloop"), 7, "endlop");
-  EXPECT_NE(error_of(unknown).find("part.stl:7: unknown keyword 'endlop'"), std::string::npos)
-      << error_of(unknown);
+  EXPECT_NE(stl_error(unknown).find("part.stl:7: unknown keyword 'endlop'"), std::string::npos)
+      << stl_error(unknown);
   const std::string cut = good.substr(0, good.find("endfacet"));  // ends inside a facet
-  EXPECT_NE(error_of(cut).find("ends inside a facet"), std::string::npos) << error_of(cut);
+  EXPECT_NE(stl_error(cut).find("ends inside a facet"), std::string::npos) << stl_error(cut);
   std::string four = good;
   four.insert(four.find("    endloop"), "      vertex 0 0 2\n");
-  EXPECT_NE(error_of(four).find("more than 3 vertices"), std::string::npos) << error_of(four);
-  EXPECT_NE(error_of("solid empty\nendsolid empty\n").find("no triangles"), std::string::npos);
+  EXPECT_NE(stl_error(four).find("more than 3 vertices"), std::string::npos) << stl_error(four);
+  EXPECT_NE(stl_error("solid empty\nendsolid empty\n").find("no triangles"), std::string::npos);
   std::string word = good;
   word.replace(word.find("vertex 0.000000"), 15, "vertex 0.0abc");
-  EXPECT_NE(error_of(word).find("'0.0abc' is not a number"), std::string::npos) << error_of(word);
+  EXPECT_NE(stl_error(word).find("'0.0abc' is not a number"), std::string::npos) << stl_error(word);
 }
 
 }  // namespace

@@ -28,7 +28,9 @@ using Json = nlohmann::json;
 
 extern char** environ;
 
-namespace {
+// A named namespace, not an anonymous one: the fixture Sweep is a base of the tests' classes,
+// which GCC wants to share its linkage when the file is compiled within a unity batch.
+namespace carom_sweep_test {
 
 const std::string kCarom = CAROM_BINARY;
 const std::string kGas = std::string(CAROM_SWEEP_DATA) + "/gas.toml";
@@ -164,7 +166,9 @@ void expect_same_results(const Csv& a, const Csv& b) {
       }
 }
 
-}  // namespace
+}  // namespace carom_sweep_test
+
+using namespace carom_sweep_test;
 
 // A local pool of 2 over 2 x 2 cases: every case completes once; summary.csv holds one row per
 // case with every numeric leaf of its summary.json; the group table's mean and sample standard

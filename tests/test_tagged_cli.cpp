@@ -43,11 +43,6 @@ snapshot_every = 0
 sample_every = 0.0005
 )";
 
-std::vector<double> series(const fs::path& run, const std::string& name) {
-  const carom::h5::File file = carom::h5::File::open(run.string(), false);
-  return file.open_group("timeseries").read<double>(name);
-}
-
 TEST_F(Cli, TaggedSeriesResumeBitForBit) {
   scene("cloud.toml", kCloud);
   ASSERT_EQ(carom("run cloud.toml --out whole --quiet"), 0) << out_;
@@ -56,8 +51,8 @@ TEST_F(Cli, TaggedSeriesResumeBitForBit) {
   for (const char* name :
        {"time", "tagged_position", "tagged_velocity", "tagged_impulse", "tagged_force",
         "tagged_force_by_partner", "tagged_mean_velocity", "tagged_mean_force"}) {
-    const std::vector<double> a = series(dir_ / "whole" / "run.h5", name);
-    const std::vector<double> b = series(dir_ / "part" / "run.h5", name);
+    const std::vector<double> a = timeseries(dir_ / "whole" / "run.h5", name);
+    const std::vector<double> b = timeseries(dir_ / "part" / "run.h5", name);
     ASSERT_EQ(a.size(), b.size()) << name;
     // memcmp: the first row's forces are NaN (no window yet), and NaN != NaN.
     EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0) << name;

@@ -10,11 +10,12 @@
 
 #include "scenarios/analysis/bed_measures.hpp"
 #include "scenarios/analysis/spectrum.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using carom::test::kPi;
 
 /// Tops of a lattice of `layers` layers of `per_layer` beads of diameter d resting on the floor:
 /// layer j's centres at (j + 1/2) d, so its tops at (j + 1/2) d + d/2.

@@ -18,14 +18,15 @@
 #include "core/side_thread.hpp"
 #include "fluid/coupling.hpp"
 #include "fluid/porosity.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kGravity = 9.81;
-const Vec3 kG(0, 0, -kGravity);
+using carom::test::kGravity;
+using carom::test::kGravityVector;
 const std::vector<double> kSpeciesDensity{2500.0, 1500.0};  // kg/m^3
 
 /// A small two-way bed: 3 x 2 x 6 gas cells of 4 mm over a box of 12 x 8 x 24 mm, an inlet
@@ -62,7 +63,7 @@ struct Bed {
   }
 
   std::unique_ptr<GasCoupling> coupling() const {
-    return std::make_unique<GasCoupling>(settings, domain, std::vector<Wall>{}, kG,
+    return std::make_unique<GasCoupling>(settings, domain, std::vector<Wall>{}, kGravityVector,
                                          kSpeciesDensity);
   }
 };
@@ -248,7 +249,7 @@ TEST_F(CouplingCheckpoint, RefusesACheckpointOfAnotherScene) {
 
   Bed one_species;
   auto single = std::make_unique<GasCoupling>(one_species.settings, one_species.domain,
-                                              std::vector<Wall>{}, kG, std::vector<double>{2500});
+                                              std::vector<Wall>{}, kGravityVector, std::vector<double>{2500});
   const std::string species = message_of(*single);
   EXPECT_NE(species.find("/gas/species_count"), std::string::npos) << species;
   EXPECT_NE(species.find("expected shape {1}"), std::string::npos) << species;

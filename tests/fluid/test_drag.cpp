@@ -8,12 +8,13 @@
 #include <string>
 
 #include "fluid/drag.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kGravity = 9.81;
+using carom::test::kPi;
+using carom::test::kGravity;
 
 /// 0.5 mm glass (2500 kg/m^3) in air (1.2 kg/m^3, 1.8e-5 Pa s): the tests/VALIDATION.md case.
 DragInput glass_in_air(double eps = 1.0, double slip = 0.0) {

@@ -13,11 +13,12 @@
 #include <vector>
 
 #include "fluid/gas_solver.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
-constexpr double kGravity = 9.81;  // m/s^2, along -z.
+using carom::test::kGravity;  // m/s^2, along -z.
 const GasProperties kAir{};        // rho_g = 1.2 kg/m^3, mu_g = 1.8e-5 Pa s.
 
 /// Sides x-, x+, y-, y+ of one kind, an inlet at z- and an outlet (p = 0) at z+.

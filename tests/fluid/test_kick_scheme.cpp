@@ -8,11 +8,12 @@
 #include <vector>
 
 #include "fluid/kick_scheme.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
-const Vec3 kG(0, 0, -9.81);
+using carom::test::kGravityVector;
 
 /// One 1 mm bead with drag rate 1/tau towards the gas velocity u and a pressure-gradient
 /// acceleration -grad p / rho_p = b: drive = g + rate u + b (core/relax_flight.hpp).
@@ -21,7 +22,7 @@ struct Bead {
   std::vector<RelaxFlight> flights;
   Bead(double rate, const Vec3& u, const Vec3& b, const Vec3& v0) {
     particles.add(Vec3::Zero(), v0, Vec3::Zero(), 5e-4, 1.3e-6, 1.3e-13, 0, 42);
-    flights.push_back(RelaxFlight{rate, kG + rate * u + b});
+    flights.push_back(RelaxFlight{rate, kGravityVector + rate * u + b});
   }
 };
 
@@ -31,7 +32,7 @@ TEST(KickScheme, OneKickIsTheExplicitDragAndPressureImpulse) {
   const double rate = 20.0, dt = 0.01;
   const Vec3 u(0.3, -0.1, 1.2), b(0.0, 0.0, 2.0), v0(0.05, 0.02, -0.4);
   Bead bead(rate, u, b, v0);
-  KickScheme(dt, kG).kick(bead.particles, bead.flights);
+  KickScheme(dt, kGravityVector).kick(bead.particles, bead.flights);
   const Vec3 expected = v0 + dt * (rate * (u - v0) + b);
   for (int k = 0; k < 3; ++k)
     EXPECT_NEAR(bead.particles.velocity[0][k], expected[k], 1e-15 * expected.norm()) << k;
@@ -44,7 +45,7 @@ TEST(KickScheme, IsFirstOrderInTheParticleStep) {
   const double tau = 0.1;
   auto error_after_tau = [&](int kicks) {
     Bead bead(1.0 / tau, Vec3(1, 0, 0), Vec3::Zero(), Vec3::Zero());
-    const KickScheme scheme(tau / kicks, kG);
+    const KickScheme scheme(tau / kicks, kGravityVector);
     for (int n = 0; n < kicks; ++n) scheme.kick(bead.particles, bead.flights);
     return std::abs(bead.particles.velocity[0].x() - (1.0 - std::exp(-1.0)));
   };
@@ -60,12 +61,12 @@ TEST(KickScheme, RefusesStepsBeyondTwiceTheRelaxationTime) {
   const double rate = 4.0;  // tau = 0.25 s
   const Vec3 v0(0, 0, -1);
   Bead at_limit(rate, Vec3::Zero(), Vec3::Zero(), v0);
-  EXPECT_NO_THROW(KickScheme(0.5, kG).kick(at_limit.particles, at_limit.flights));
+  EXPECT_NO_THROW(KickScheme(0.5, kGravityVector).kick(at_limit.particles, at_limit.flights));
   EXPECT_DOUBLE_EQ(at_limit.particles.velocity[0].z(), 1.0);  // v - u flipped: 1 - dt / tau = -1.
 
   Bead beyond(rate, Vec3::Zero(), Vec3::Zero(), v0);
   try {
-    KickScheme(0.5000001, kG).kick(beyond.particles, beyond.flights);
+    KickScheme(0.5000001, kGravityVector).kick(beyond.particles, beyond.flights);
     FAIL() << "dt_p > 2 tau must be refused";
   } catch (const KickUnstable& e) {
     const std::string message = e.what();
@@ -75,7 +76,7 @@ TEST(KickScheme, RefusesStepsBeyondTwiceTheRelaxationTime) {
     EXPECT_NE(message.find("particle_step"), std::string::npos) << message;
   }
   EXPECT_EQ(beyond.particles.velocity[0], v0);
-  EXPECT_THROW(KickScheme(0.6, kG).check_stability(beyond.particles, beyond.flights), KickUnstable);
+  EXPECT_THROW(KickScheme(0.6, kGravityVector).check_stability(beyond.particles, beyond.flights), KickUnstable);
 }
 
 // With the longitudinal drag rate (1/m) dF/ds (GasCoupling::longitudinal_rates; larger than the
@@ -86,10 +87,10 @@ TEST(KickScheme, LongitudinalRateLowersTheLimitBelowTwiceTau) {
   const std::vector<double> longitudinal{6.0};
   Bead bead(4.0, Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, -1));
   EXPECT_NO_THROW(
-      KickScheme(1.0 / 3.0, kG).check_stability(bead.particles, bead.flights, &longitudinal));
-  EXPECT_NO_THROW(KickScheme(0.34, kG).check_stability(bead.particles, bead.flights));
+      KickScheme(1.0 / 3.0, kGravityVector).check_stability(bead.particles, bead.flights, &longitudinal));
+  EXPECT_NO_THROW(KickScheme(0.34, kGravityVector).check_stability(bead.particles, bead.flights));
   try {
-    KickScheme(0.34, kG).check_stability(bead.particles, bead.flights, &longitudinal);
+    KickScheme(0.34, kGravityVector).check_stability(bead.particles, bead.flights, &longitudinal);
     FAIL() << "dt_p > 2 m/(dF/ds) must be refused";
   } catch (const KickUnstable& e) {
     const std::string message = e.what();

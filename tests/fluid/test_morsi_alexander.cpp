@@ -8,14 +8,12 @@
 
 #include "fluid/drag.hpp"
 #include "fluid/morsi_alexander.hpp"
+#include "tests/assertions.hpp"
 
 namespace carom {
 namespace {
 
-::testing::AssertionResult close(double a, double b, double tol) {
-  if (std::abs(a - b) <= tol * std::abs(b)) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << a << " vs " << b << " (relative " << (a - b) / b << ")";
-}
+using test::close;
 
 // One Re inside each range; Python values, 1e-12 relative (the same three-term sum).
 TEST(MorsiAlexander, DragCoefficientOnEveryRange) {

@@ -17,6 +17,7 @@
 
 #include "fluid/overlap.hpp"
 #include "fluid/porosity.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
@@ -34,7 +35,7 @@ double unit_cube_volume_below(const Vec3& n, double offset) {
 }
 
 
-constexpr double kPi = std::numbers::pi;
+using carom::test::kPi;
 
 /// Tanh-sinh quadrature of a bounded f over [lo, hi]: double-exponential convergence even with
 /// the (x - x0)^(3/2) endpoint behaviour of the slice areas here; about 1e-15 relative with

@@ -13,17 +13,15 @@
 
 #include "fluid/kick_scheme.hpp"
 #include "fluid/spin_forces.hpp"
+#include "tests/assertions.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using carom::test::kPi;
 
-/// Relative closeness |a - b| <= tol |b|.
-::testing::AssertionResult close(double a, double b, double tol) {
-  if (std::abs(a - b) <= tol * std::abs(b)) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << a << " vs " << b << " (relative " << (a - b) / b << ")";
-}
+using test::close;
 
 // C_L = 0.45 + (2 Gamma - 0.45) exp(-0.075 Gamma^0.4 Re^0.7). Python: 0.45 + (2*G - 0.45) *
 // math.exp(-0.075 * G**0.4 * Re**0.7). Same formula, a few roundings: 1e-12 relative.

@@ -81,13 +81,14 @@
 #include <numbers>
 
 #include "tests/soft_sphere/chung_ooi_support.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
 using namespace soft_test;
 
-constexpr double kPi = std::numbers::pi;
+using carom::test::kPi;
 
 // Chung & Ooi (2011), the DEM impact benchmarks, tests 1-3 with their materials (as the Yade
 // and Kratos implementations of the benchmark give them: the paper itself was not at hand).

@@ -10,13 +10,14 @@
 #include "events/laws/walton.hpp"
 #include "events/soft_sphere/hertz_damping.hpp"
 #include "tests/soft_sphere/soft_support.hpp"
+#include "tests/test_constants.hpp"
 
 namespace carom {
 namespace {
 
 using namespace soft_test;
 
-constexpr double kPi = std::numbers::pi;
+using carom::test::kPi;
 
 // tests/VALIDATION.md, "Soft-sphere contacts": identical spheres R = 0.5 mm, 2500 kg/m^3,
 // E = 1e7 Pa, nu = 0.3, approach speed 1 m/s: delta_max = 3.464117e-5 m, t_c = 1.0195850e-4 s,

@@ -24,6 +24,14 @@ struct System {
   std::vector<std::uint32_t> entering_species;
   /// Largest speed at which particles enter through inflows, m/s.
   double entering_speed = 0;
+  /// A collision is an impact when its normal approach speed exceeds this, m/s (0: every
+  /// collision is one). The scene's [analysis] impact_speed; its default and the reasoning behind
+  /// it: scenarios/scene/impact_speed.hpp.
+  double impact_speed = 0;
+
+  /// Whether a collision at normal approach speed `approach` (m/s, > 0 when approaching) is an
+  /// impact.
+  bool is_impact(double approach) const { return approach > impact_speed; }
 
   /// Adds one particle of species s with velocity v and spin w at position r (time 0).
   void add_particle(std::uint32_t s, const Vec3& r, const Vec3& v, const Vec3& w = Vec3::Zero()) {

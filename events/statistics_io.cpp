@@ -20,6 +20,8 @@ void write_statistics(const h5::Group& stats, const RunStatistics& st) {
   stats.set_attribute("cell_crossings", st.cell_crossings);
   stats.write("pair_collisions", st.pair_collisions);
   stats.write("wall_collisions", st.wall_collisions);
+  stats.write("pair_impacts", st.pair_impacts);
+  stats.write("wall_impacts", st.wall_impacts);
   stats.write("pair_impulse", st.pair_impulse);
   stats.write("wall_impulse",
               flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
@@ -64,6 +66,8 @@ RunStatistics read_statistics(const h5::Group& stats) {
   st.cell_crossings = stats.attribute<std::uint64_t>("cell_crossings");
   st.pair_collisions = stats.read<std::uint64_t>("pair_collisions", {species * species});
   st.wall_collisions = stats.read<std::uint64_t>("wall_collisions", {species * walls});
+  st.pair_impacts = stats.read<std::uint64_t>("pair_impacts", {species * species});
+  st.wall_impacts = stats.read<std::uint64_t>("wall_impacts", {species * walls});
   st.pair_impulse = stats.read<double>("pair_impulse", {species * species});
   const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
   st.wall_impulse.assign(impulse.begin(), impulse.end());

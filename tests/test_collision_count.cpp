@@ -24,6 +24,12 @@
 // missed, double-booked or booked to the wrong species or wall changes an integer count and
 // fails the test (checked by swapping the low and high walls in the mapping, and by counting
 // like collisions once in the frequency: both fail every case).
+//
+// The impacts (events/statistics.hpp: the collisions whose normal approach speed exceeds the
+// scene's impact speed) are checked the same way: the oracle counts the collisions faster than
+// kImpactSpeed, which is set near the middle of the approach speeds (T = 1 J, m = 1 kg and
+// 0.3 kg: relative speeds of order 1-3 m/s), so that a wrong speed, sign or species in the
+// impact test changes the counts.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,10 +66,16 @@ struct Ball {
   int species;    ///< 0 or 1.
 };
 
+/// The scene's impact speed, m/s.
+constexpr double kImpactSpeed = 1.0;
+
 /// Collisions counted by the oracle.
 struct Counts {
   std::array<std::array<std::uint64_t, kSpecies>, kSpecies> pair{};  ///< Symmetric, like carom's.
   std::array<std::array<std::uint64_t, kWalls>, kSpecies> wall{};    ///< [species][oracle wall].
+  /// Of those, the impacts: normal approach speed above kImpactSpeed.
+  std::array<std::array<std::uint64_t, kSpecies>, kSpecies> pair_impacts{};
+  std::array<std::array<std::uint64_t, kWalls>, kSpecies> wall_impacts{};
   std::uint64_t pair_events = 0;
   std::uint64_t wall_events = 0;
 
@@ -153,6 +165,10 @@ class BruteForceGas {
   /// Normal restitution: J = -(1 + e) m_ab (dv . n) n on a, -J on b, n = (r_a - r_b) / |.|.
   void collide_pair(Ball& a, Ball& b) {
     const Vec3 n = (a.position - b.position).normalized();
+    if (-(a.velocity - b.velocity).dot(n) > kImpactSpeed) {
+      ++counts_.pair_impacts[a.species][b.species];
+      if (a.species != b.species) ++counts_.pair_impacts[b.species][a.species];
+    }
     const double reduced_mass = a.mass * b.mass / (a.mass + b.mass);
     const Vec3 impulse =
         -(1.0 + restitution_) * reduced_mass * (a.velocity - b.velocity).dot(n) * n;
@@ -165,6 +181,7 @@ class BruteForceGas {
 
   /// A flat wall reverses the normal velocity component and scales it by e.
   void collide_wall(Ball& a, int w) {
+    if (std::abs(a.velocity[w / 2]) > kImpactSpeed) ++counts_.wall_impacts[a.species][w];
     a.velocity[w / 2] *= -restitution_;
     ++counts_.wall[a.species][w];
     ++counts_.wall_events;
@@ -208,6 +225,7 @@ std::string scene_text(std::uint64_t seed, double restitution, double end_time) 
   text += "[collisions]\ndefault = { e = " + number(restitution) +
           ", mu = 0.0, beta0 = -1.0 }\ncollapse = { model = \"none\" }\n";
   text += "[time]\nend = " + number(end_time) + "\n";
+  text += "[analysis]\nimpact_speed = " + number(kImpactSpeed) + "\n";
   Rng rng(seed);
   std::vector<std::pair<Vec3, double>> placed;  // centre, radius
   for (int k = 0; k < kSpecies * kPerSpecies; ++k) {
@@ -347,6 +365,24 @@ TEST_P(CollisionCount, StatisticsAndSummaryMatchBruteForce) {
       EXPECT_EQ(st.wall(s, carom_wall[w]), expected.wall[s][w])
           << kSpeciesNames[s] << "@" << kWallNames[w];
   }
+  // The impacts, exactly; a real check only when some collisions are slower than the impact
+  // speed and some faster.
+  std::uint64_t impacts = 0;
+  for (int s = 0; s < kSpecies; ++s) {
+    for (int t = 0; t < kSpecies; ++t) {
+      EXPECT_EQ(st.pair_impact(s, t), expected.pair_impacts[s][t])
+          << kSpeciesNames[s] << "-" << kSpeciesNames[t] << " impacts";
+      impacts += expected.pair_impacts[s][t];
+    }
+    for (int w = 0; w < kWalls; ++w)
+      EXPECT_EQ(st.wall_impact(s, carom_wall[w]), expected.wall_impacts[s][w])
+          << kSpeciesNames[s] << "@" << kWallNames[w] << " impacts";
+  }
+  EXPECT_GT(impacts, 0u);
+  std::uint64_t pairs = 0;
+  for (int s = 0; s < kSpecies; ++s)
+    for (int t = 0; t < kSpecies; ++t) pairs += expected.pair[s][t];
+  EXPECT_LT(impacts, pairs);
 
   // The analysis layer: summary.json's collision_frequency per particle, nu_st = C_st (2 if
   // s = t, as both particles of a like collision count) / (N_s T), and s@walls = C_s,walls /
@@ -366,6 +402,22 @@ TEST_P(CollisionCount, StatisticsAndSummaryMatchBruteForce) {
     const double want = static_cast<double>(expected.walls(s)) * per;
     ASSERT_TRUE(frequency.contains(key)) << key;
     EXPECT_NEAR(frequency.at(key).get<double>(), want, 1e-12 * want) << key;
+  }
+  // The same for the impacts (impact_frequency), and the speed they were counted at.
+  EXPECT_EQ(summary.at("impact_speed").get<double>(), kImpactSpeed);
+  const nlohmann::json& impact = summary.at("impact_frequency");
+  for (int s = 0; s < kSpecies; ++s) {
+    const double per = 1.0 / (static_cast<double>(count[s]) * end_time);
+    for (int t = 0; t < kSpecies; ++t) {
+      const std::string key = kSpeciesNames[s] + "-" + kSpeciesNames[t];
+      const double want =
+          static_cast<double>(expected.pair_impacts[s][t]) * (s == t ? 2.0 : 1.0) * per;
+      EXPECT_NEAR(impact.at(key).get<double>(), want, 1e-12 * want) << key << " impacts";
+    }
+    std::uint64_t walls = 0;
+    for (int w = 0; w < kWalls; ++w) walls += expected.wall_impacts[s][w];
+    const double want = static_cast<double>(walls) * per;
+    EXPECT_NEAR(impact.at(kSpeciesNames[s] + "@walls").get<double>(), want, 1e-12 * want);
   }
 }
 

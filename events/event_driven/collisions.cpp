@@ -28,9 +28,9 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
                                    ? Vec3(p.mass[i] * mi.velocity + p.mass[j] * mj.velocity)
                                    : Vec3::Zero();
   const std::uint32_t si = bi.species, sj = bj.species;
+  const double normal_velocity = (mi.velocity - mj.velocity).dot(n);  // < 0: approaching
   const ContactLaw law = effective_law(system_.materials.pair(si, sj), options_.collapse,
-                                       (mi.velocity - mj.velocity).dot(n), t, bi.last_collision,
-                                       bj.last_collision);
+                                       normal_velocity, t, bi.last_collision, bj.last_collision);
   const CollisionOutcome outcome =
       collide(law, n,
               ContactBody{mi.velocity, bi.spin, bi.fixed ? 0.0 : bi.inverse_mass, mi.radius,
@@ -43,12 +43,10 @@ void EventDrivenEngine::collide_pair(std::int32_t i, std::int32_t j, double t) {
   note_speed<Flight>(j);
 
   const std::size_t species = statistics_.species_count;
-  ++statistics_.pair_collisions[si * species + sj];
-  if (si != sj) ++statistics_.pair_collisions[sj * species + si];
+  statistics_.count_pair(si, sj, system_.is_impact(-normal_velocity));
   const double impulse = outcome.impulse.norm();
   statistics_.pair_impulse[si * species + sj] += impulse;
   if (si != sj) statistics_.pair_impulse[sj * species + si] += impulse;
-  ++statistics_.pair_events;
   statistics_.virial += dr * outcome.impulse.transpose();
   statistics_.dissipated_energy += outcome.dissipated;
   if (statistics_.tagged.any()) statistics_.tagged.book_pair(i, j, si, sj, outcome.impulse);
@@ -80,15 +78,15 @@ void EventDrivenEngine::collide_wall(std::int32_t i, std::int32_t w, double t) {
     throw std::logic_error(out.str());
   }
   const std::uint32_t si = b.species;
+  const double normal_velocity = m.velocity.dot(n);  // < 0: approaching
   const ContactLaw law = effective_law(system_.materials.wall(si, w), options_.collapse,
-                                       m.velocity.dot(n), t, b.last_collision, -kNever);
+                                       normal_velocity, t, b.last_collision, -kNever);
   Vec3 wall_velocity = Vec3::Zero(), wall_spin = Vec3::Zero();
   const CollisionOutcome outcome =
       collide(law, n, ContactBody{m.velocity, b.spin, b.inverse_mass, m.radius, b.inverse_inertia},
               ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
   note_speed<Flight>(i);
-  ++statistics_.wall_collisions[si * statistics_.wall_count + w];
-  ++statistics_.wall_events;
+  statistics_.count_wall(si, w, system_.is_impact(-normal_velocity));
   statistics_.wall_impulse[w] -= outcome.impulse;
   statistics_.dissipated_energy += outcome.dissipated;
   if (statistics_.tagged.any()) statistics_.tagged.book_wall(i, w, outcome.impulse);

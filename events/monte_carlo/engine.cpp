@@ -199,12 +199,11 @@ void MonteCarloEngine::present(double t) {
 }
 
 void MonteCarloEngine::book(const StepEvent& e, std::size_t i, std::uint32_t s, RunStatistics& st,
-                            std::vector<std::uint64_t>& travelling) const {
+                            TravellingCounts& travelling) const {
   st.dissipated_energy += e.dissipated;
   if (e.partner < 0) {
     const std::size_t w = static_cast<std::size_t>(-1 - e.partner);
-    ++st.wall_collisions[s * st.wall_count + w];
-    ++st.wall_events;
+    st.count_wall(s, w, system_.is_impact(e.approach));
     st.wall_impulse[w] -= e.impulse;
     if (st.tagged.any()) st.tagged.book_wall(static_cast<std::int32_t>(i), w, e.impulse);
     return;
@@ -214,22 +213,26 @@ void MonteCarloEngine::book(const StepEvent& e, std::size_t i, std::uint32_t s, 
   if (st.tagged.any())
     st.tagged.book_pair(static_cast<std::int32_t>(i), -1, s, static_cast<std::uint32_t>(t),
                         e.impulse);
-  ++travelling[s * species + t];
+  ++travelling.collisions[s * species + t];
+  if (system_.is_impact(e.approach)) ++travelling.impacts[s * species + t];
   const double half_impulse = 0.5 * e.impulse.norm();
   st.pair_impulse[s * species + t] += half_impulse;
   if (s != t) st.pair_impulse[t * species + s] += half_impulse;
   st.virial += 0.5 * e.separation * e.impulse.transpose();
 }
 
-void MonteCarloEngine::derive_pair_counts(RunStatistics& st, const std::vector<std::uint64_t>& travelling) const {
+void MonteCarloEngine::derive_pair_counts(RunStatistics& st, const TravellingCounts& travelling) const {
   const std::size_t species = st.species_count;
+  // Half of the directed counts of the pair, both directions (s-s: its own).
+  const auto half = [species](const std::vector<std::uint64_t>& directed, std::size_t s, std::size_t t) {
+    return (s == t ? directed[s * species + s] : directed[s * species + t] + directed[t * species + s]) / 2;
+  };
   std::uint64_t total = 0;
   for (std::size_t s = 0; s < species; ++s)
     for (std::size_t t = 0; t < species; ++t) {
-      const std::uint64_t both =
-          s == t ? travelling[s * species + s] : travelling[s * species + t] + travelling[t * species + s];
-      st.pair_collisions[s * species + t] = both / 2;
-      total += travelling[s * species + t];
+      st.pair_collisions[s * species + t] = half(travelling.collisions, s, t);
+      st.pair_impacts[s * species + t] = half(travelling.impacts, s, t);
+      total += travelling.collisions[s * species + t];
     }
   st.pair_events = total / 2;
 }
@@ -280,7 +283,7 @@ double MonteCarloEngine::particles_kinetic_energy() const {
 
 std::vector<MethodQuantity> MonteCarloEngine::quantities() const {
   std::uint64_t travelling = 0;
-  for (std::uint64_t c : travelling_) travelling += c;
+  for (std::uint64_t c : travelling_.collisions) travelling += c;
   const double per_cell = double(system_.particles.size()) / double(grid_.cell_count());
   return {
       {"time_step", time_step_, "s", "particle time step dt_p of the Monte Carlo method"},

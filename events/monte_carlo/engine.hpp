@@ -57,6 +57,18 @@
 
 namespace carom {
 
+/// Collisions and impacts of travelling particles of species s with partners of species t,
+/// [s * S + t] (directed: the pair counts take half of each).
+struct TravellingCounts {
+  std::vector<std::uint64_t> collisions;
+  std::vector<std::uint64_t> impacts;
+  void assign(std::size_t species) {
+    collisions.assign(species * species, 0);
+    impacts.assign(species * species, 0);
+  }
+  bool operator==(const TravellingCounts&) const = default;
+};
+
 /// Everything a Monte Carlo run needs to continue exactly: the state at the start of the
 /// current step (its particles, counters, random generator), where that step ends, and the
 /// current time inside it.
@@ -64,7 +76,7 @@ struct MonteCarloState {
   ParticleStore particles;                 ///< At step_start (clocks = step_start).
   std::vector<RelaxFlight> flights;        ///< Each particle's flight in the step.
   RunStatistics statistics;                ///< At step_start.
-  std::vector<std::uint64_t> travelling;   ///< Directed collision counts at step_start [s * S + t].
+  TravellingCounts travelling;             ///< Directed counts at step_start.
   std::string rng;                         ///< Random generator at step_start (Rng::state()).
   double time = 0;                         ///< Current time, s.
   double step_start = 0;                   ///< s.
@@ -125,7 +137,7 @@ class MonteCarloEngine final : public CollisionMethod {
   double time_step() const { return time_step_; }
   const CollisionGrid& grid() const { return grid_; }
   /// Collisions of travelling particles of species s with partners of species t, [s * S + t].
-  const std::vector<std::uint64_t>& travelling_collisions() const { return travelling_; }
+  const std::vector<std::uint64_t>& travelling_collisions() const { return travelling_.collisions; }
   /// Each particle's current flight.
   const std::vector<RelaxFlight>& flights() const { return flights_; }
 
@@ -155,9 +167,9 @@ class MonteCarloEngine final : public CollisionMethod {
   void present(double t);
   /// Adds one logged event of a particle of species s to the counters.
   void book(const StepEvent& event, std::size_t i, std::uint32_t s, RunStatistics& statistics,
-            std::vector<std::uint64_t>& travelling) const;
-  /// Sets the symmetric pair counts and pair_events from the directed counts.
-  void derive_pair_counts(RunStatistics& statistics, const std::vector<std::uint64_t>& travelling) const;
+            TravellingCounts& travelling) const;
+  /// Sets the symmetric pair counts, pair impacts and pair_events from the directed counts.
+  void derive_pair_counts(RunStatistics& statistics, const TravellingCounts& travelling) const;
   void hold_fixed_particles();
   /// Translational and rotational kinetic energy of the particles' stored states, J.
   double particles_kinetic_energy() const;
@@ -206,7 +218,7 @@ class MonteCarloEngine final : public CollisionMethod {
   RunStatistics statistics_;       ///< As shown at time_.
   RunStatistics start_statistics_;  ///< At step_start_.
   TaggedImpulses& tagged_impulses() override { return statistics_.tagged; }
-  std::vector<std::uint64_t> travelling_, start_travelling_;
+  TravellingCounts travelling_, start_travelling_;
   double max_collisions_per_step_ = 0;
   std::uint64_t bound_exceeded_ = 0;       ///< Committed steps.
   std::uint64_t step_bound_exceeded_ = 0;  ///< In the computed step.

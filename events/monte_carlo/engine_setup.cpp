@@ -30,7 +30,7 @@ MonteCarloEngine::MonteCarloEngine(System system, MonteCarloOptions options)
   flights_.assign(n, RelaxFlight{0.0, system_.flight.gravity});
   hold_fixed_particles();
   statistics_.resize(system_.species.size(), system_.walls.size());
-  travelling_.assign(system_.species.size() * system_.species.size(), 0);
+  travelling_.assign(system_.species.size());
   resolve_time_step_and_cells();
 }
 
@@ -41,7 +41,8 @@ MonteCarloEngine::MonteCarloEngine(System system, MonteCarloOptions options, Mon
   const std::size_t species = system_.species.size();
   if (state.flights.size() != n) throw std::invalid_argument("saved state: one flight per particle is missing");
   if (state.statistics.species_count != species || state.statistics.wall_count != system_.walls.size() ||
-      state.travelling.size() != species * species)
+      state.travelling.collisions.size() != species * species ||
+      state.travelling.impacts.size() != species * species)
     throw std::invalid_argument("saved state: the counters do not match the scene's species and walls");
   validate();
   flights_ = std::move(state.flights);

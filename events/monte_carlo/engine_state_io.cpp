@@ -18,7 +18,8 @@ using h5::unflatten;
 // gas_work (J, at step_start), flow_energy (J);
 // rng (the generator's text state); particles/ (position, velocity, spin (N x 3), clock,
 // radius, mass, inertia, species, id) as of step_start; flights/ (rate, drive (N x 3));
-// statistics/ as the event-driven engine writes it, plus travelling_collisions (S x S);
+// statistics/ as every method writes it (write_statistics), plus travelling_collisions and
+// travelling_impacts (S x S);
 // actions/ (name, next_time).
 void write_monte_carlo_state(const h5::Group& group, const MonteCarloState& s) {
   group.set_attribute("method", std::string("monte_carlo"));
@@ -56,22 +57,10 @@ void write_monte_carlo_state(const h5::Group& group, const MonteCarloState& s) {
   flights.write("rate", rate);
   flights.write("drive", flatten(drive), {drive.size(), 3});
 
-  const RunStatistics& st = s.statistics;
   const h5::Group stats = group.create_group("statistics");
-  stats.set_attribute("species_count", static_cast<std::uint64_t>(st.species_count));
-  stats.set_attribute("wall_count", static_cast<std::uint64_t>(st.wall_count));
-  stats.set_attribute("dissipated_energy", st.dissipated_energy);
-  stats.set_attribute("events", st.events);
-  stats.set_attribute("pair_events", st.pair_events);
-  stats.set_attribute("wall_events", st.wall_events);
-  stats.write("pair_collisions", st.pair_collisions);
-  stats.write("travelling_collisions", s.travelling);
-  stats.write("wall_collisions", st.wall_collisions);
-  stats.write("pair_impulse", st.pair_impulse);
-  stats.write("wall_impulse", flatten(std::vector<Vec3>(st.wall_impulse.begin(), st.wall_impulse.end())),
-              {st.wall_impulse.size(), 3});
-  stats.write("virial", row_major(st.virial), {3, 3});
-  write_tagged(stats, st.tagged);
+  write_statistics(stats, s.statistics);
+  stats.write("travelling_collisions", s.travelling.collisions);
+  stats.write("travelling_impacts", s.travelling.impacts);
 
   const h5::Group actions = group.create_group("actions");
   std::vector<std::string> names;
@@ -121,23 +110,11 @@ MonteCarloState read_monte_carlo_state(const h5::Group& group) {
   s.flights.resize(n);
   for (std::size_t i = 0; i < n; ++i) s.flights[i] = RelaxFlight{rate[i], drive[i]};
 
-  RunStatistics& st = s.statistics;
   const h5::Group stats = group.open_group("statistics");
-  const auto species = stats.attribute<std::uint64_t>("species_count");
-  const auto walls = stats.attribute<std::uint64_t>("wall_count");
-  st.resize(species, walls);
-  st.dissipated_energy = stats.attribute<double>("dissipated_energy");
-  st.events = stats.attribute<std::uint64_t>("events");
-  st.pair_events = stats.attribute<std::uint64_t>("pair_events");
-  st.wall_events = stats.attribute<std::uint64_t>("wall_events");
-  st.pair_collisions = stats.read<std::uint64_t>("pair_collisions", {species * species});
-  s.travelling = stats.read<std::uint64_t>("travelling_collisions", {species * species});
-  st.wall_collisions = stats.read<std::uint64_t>("wall_collisions", {species * walls});
-  st.pair_impulse = stats.read<double>("pair_impulse", {species * species});
-  const std::vector<Vec3> impulse = unflatten(stats.read<double>("wall_impulse", {walls, 3}));
-  st.wall_impulse.assign(impulse.begin(), impulse.end());
-  st.virial = from_row_major(stats.read<double>("virial", {3, 3}));
-  st.tagged = read_tagged(stats);
+  s.statistics = read_statistics(stats);
+  const std::size_t species = s.statistics.species_count;
+  s.travelling.collisions = stats.read<std::uint64_t>("travelling_collisions", {species * species});
+  s.travelling.impacts = stats.read<std::uint64_t>("travelling_impacts", {species * species});
 
   const h5::Group actions = group.open_group("actions");
   const std::vector<std::string> names = actions.read_strings("name");

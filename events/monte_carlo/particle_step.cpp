@@ -172,11 +172,12 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
       // step.
       ContactLaw law = system_.materials.wall(s, wall);
       if (std::abs(v.dot(normal)) < elastic_below_speed_) law.restitution = 1.0;
+      const double approach = -v.dot(normal);
       const CollisionOutcome outcome =
           collide(law, normal, ContactBody{v, w, 1.0 / mass, a, 1.0 / inertia},
                   ContactBody{wall_velocity, wall_spin, 0.0, 0.0, 0.0});
       log_.push_back(StepEvent{clock, r, v, w, -1 - wall, outcome.impulse, Vec3::Zero(),
-                               outcome.dissipated, mass * flown_work});
+                               outcome.dissipated, approach, mass * flown_work});
       flown_work = 0.0;
       continue;
     }
@@ -211,13 +212,14 @@ void MonteCarloEngine::step_particle(std::size_t i, std::int32_t cell) {
     const double partner_mass = kind.density * 4.0 / 3.0 * std::numbers::pi * std::pow(partner_radius, 3);
     const double partner_inertia = 0.4 * partner_mass * partner_radius * partner_radius;
     const double before = kinetic_energy(v, w, mass, inertia);
+    const double approach = -relative.dot(normal);
     const CollisionOutcome outcome =
         collide(system_.materials.pair(s, t), normal, ContactBody{v, w, 1.0 / mass, a, 1.0 / inertia},
                 ContactBody{partner_velocity, partner_spin, kind.fixed ? 0.0 : 1.0 / partner_mass, partner_radius,
                             kind.fixed ? 0.0 : 1.0 / partner_inertia});
     log_.push_back(StepEvent{clock, r, v, w, static_cast<std::int32_t>(t), outcome.impulse,
                              (a + partner_radius) * normal,
-                             before - kinetic_energy(v, w, mass, inertia), mass * flown_work});
+                             before - kinetic_energy(v, w, mass, inertia), approach, mass * flown_work});
     flown_work = 0.0;
   }
   fly(r, v, f, step_end_ - clock, gas, gravity, flown_work);

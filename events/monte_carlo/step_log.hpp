@@ -22,6 +22,8 @@ struct StepEvent {
   Vec3 impulse = Vec3::Zero();     ///< On the particle, N s.
   Vec3 separation = Vec3::Zero();  ///< Pair: r_particle - r_partner = (R1 + R0) n, m.
   double dissipated = 0;           ///< Kinetic energy the particle lost (may be < 0 in a pair), J.
+  /// Normal approach speed before the collision, m/s (for the impact count, System::is_impact).
+  double approach = 0;
   /// Work of the gas forces (drag, pressure gradient) on the particle over its flight since its
   /// previous event or the step start, J (relax flights; 0 otherwise).
   double gas_work = 0;

@@ -135,9 +135,8 @@ void SoftSphereEngine::compute_forces(double dt, bool clear) {
       c.since = time_ + dt;
       c.spring = Vec3::Zero();
       c.overlap = 0.0;
-      statistics_.pair_collisions[si * S + sj] += 1;
-      if (si != sj) statistics_.pair_collisions[sj * S + si] += 1;
-      ++statistics_.pair_events;
+      // An impact when the pair approaches faster than the impact speed as the contact begins.
+      statistics_.count_pair(si, sj, system_.is_impact(-(p.velocity[i] - p.velocity[j]).dot(n)));
     }
     const double smaller = std::min(a_i, a_j);
     worst_overlap_ = std::max(worst_overlap_, delta / smaller);
@@ -181,8 +180,9 @@ void SoftSphereEngine::compute_forces(double dt, bool clear) {
       c.since = time_ + dt;
       c.spring = Vec3::Zero();
       c.overlap = 0.0;
-      statistics_.wall_collisions[s * W + c.wall] += 1;
-      ++statistics_.wall_events;
+      // An impact when the particle approaches faster than the impact speed as the contact begins.
+      statistics_.count_wall(s, c.wall,
+                             system_.is_impact(-p.velocity[i].dot(wall.contact_normal(p.position[i]))));
     }
     worst_overlap_ = std::max(worst_overlap_, delta / a);
     if (delta > options_.max_overlap * a) fail_overlap(i, -1 - c.wall, delta, a);

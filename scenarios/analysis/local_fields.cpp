@@ -108,7 +108,8 @@ std::vector<double> species_granular_temperature(const LocalFields& fields) {
 }
 
 std::vector<double> cell_collision_frequencies(const LocalFields& fields, std::size_t cell,
-                                               const std::vector<double>& fallback_temperature) {
+                                               const std::vector<double>& fallback_temperature,
+                                               double impact_speed) {
   const std::size_t S = fields.species_count;
   std::vector<double> frequency(S * S, kNaN);
   if (!(fields.open_volume[cell] > 0.0) || !(fields.solid_fraction(cell) < 1.0)) return frequency;
@@ -134,19 +135,27 @@ std::vector<double> cell_collision_frequencies(const LocalFields& fields, std::s
       }
       const double d = 0.5 * (mixture[s].diameter + mixture[t].diameter);
       const double mean_relative_speed = std::sqrt(8.0 * (theta[s] + theta[t]) / std::numbers::pi);
-      frequency[s * S + t] =
-          n_t * std::numbers::pi * d * d * contact_value(mixture, s, t) * mean_relative_speed;
+      frequency[s * S + t] = n_t * std::numbers::pi * d * d * contact_value(mixture, s, t) *
+                             mean_relative_speed *
+                             impact_share(impact_speed, theta[s] + theta[t]);
     }
   return frequency;
 }
 
-std::vector<double> kinetic_collision_frequencies(const LocalFields& fields) {
+double impact_share(double impact_speed, double relative_variance) {
+  if (impact_speed == 0.0) return 1.0;
+  if (!(relative_variance > 0.0)) return 0.0;
+  return std::exp(-impact_speed * impact_speed / (2.0 * relative_variance));
+}
+
+std::vector<double> kinetic_collision_frequencies(const LocalFields& fields, double impact_speed) {
   const std::size_t S = fields.species_count;
   if (S == 0) return {};
   const std::vector<double> fallback = species_granular_temperature(fields);
   std::vector<double> weighted(S * S, 0.0), weight(S, 0.0);
   for (std::size_t cell = 0; cell < fields.grid.size(); ++cell) {
-    const std::vector<double> frequency = cell_collision_frequencies(fields, cell, fallback);
+    const std::vector<double> frequency =
+        cell_collision_frequencies(fields, cell, fallback, impact_speed);
     if (std::isnan(frequency[0])) continue;  // all NaN or none
     for (std::size_t s = 0; s < S; ++s) {
       const double count = double(fields.count[fields.at(cell, s)]);

@@ -70,15 +70,27 @@ std::vector<double> species_granular_temperature(const LocalFields& fields);
 /// fewer than 2 particles in the cell takes its temperature from fallback_temperature (m^2/s^2,
 /// e.g. species_granular_temperature; 0 where that is NaN). The whole matrix is NaN where the open
 /// volume is not positive or the centre-binned solid fraction reaches 1 (cells too small for centre
-/// binning).
+/// binning). With impact_speed v* > 0, only the impacts: the collisions whose normal approach
+/// speed exceeds v* (scenarios/scene/impact_speed.hpp), nu_st times impact_share.
 std::vector<double> cell_collision_frequencies(const LocalFields& fields, std::size_t cell,
-                                               const std::vector<double>& fallback_temperature);
+                                               const std::vector<double>& fallback_temperature,
+                                               double impact_speed = 0.0);
+
+/// The share of the collisions of two Maxwellian species whose normal approach speed w exceeds
+/// v* = impact_speed: exp(-v*^2 / (2 sigma^2)), sigma^2 = theta_s + theta_t the variance of the
+/// relative velocity per component (relative_variance, m^2/s^2). Collisions happen at the rate
+/// w f(w) over approaching w > 0, f Gaussian of variance sigma^2, and
+///   int_v*^inf w exp(-w^2/(2 sigma^2)) dw / int_0^inf (the same) = exp(-v*^2/(2 sigma^2)).
+/// 1 when v* = 0; 0 when v* > 0 and sigma^2 = 0.
+double impact_share(double impact_speed, double relative_variance);
 
 /// Bed-averaged kinetic-theory collision frequencies, S x S row-major, 1/s: each cell's
 /// cell_collision_frequencies (fallback: species_granular_temperature) averaged over the cells
 /// with the count of species s as weight for row s; cells where the matrix is NaN are skipped.
 /// With N_s the count of s in the cells used, N_s nu_st = N_t nu_ts holds as it does per cell.
-/// NaN in a row whose species is in no usable cell.
-std::vector<double> kinetic_collision_frequencies(const LocalFields& fields);
+/// NaN in a row whose species is in no usable cell. With impact_speed > 0: the impacts only (see
+/// cell_collision_frequencies).
+std::vector<double> kinetic_collision_frequencies(const LocalFields& fields,
+                                                  double impact_speed = 0.0);
 
 }  // namespace carom

@@ -76,6 +76,11 @@ std::string numerical_settings_section(const Scene& scene) {
   std::ostringstream r;
   r << "## What these numbers depend on\n\n" << method_settings(scene) << "\n";
   if (const std::string gas = gas_settings(scene); !gas.empty()) r << gas << "\n";
+  r << "- Impacts: collisions faster than v* = " << display_number(scene.system.impact_speed)
+    << " m/s (analysis.impact_speed"
+    << (scene.system.impact_speed > 0 ? "; the default is 0.1 sqrt(g d) with d the smallest diameter"
+                                      : "; 0: every collision is an impact")
+    << "). A larger v* counts fewer of a dense bed's slow collisions.\n";
   r << "- Seed: initial.seed = " << scene.seed
     << ", one run. Its numbers carry the noise of one seed, which a single run cannot measure: "
        "run a sweep over seeds (scenarios/guides/sweeps.md) for their standard errors.\n\n";

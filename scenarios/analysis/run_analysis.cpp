@@ -60,6 +60,7 @@ std::vector<std::pair<std::string, std::size_t>> series_widths(std::size_t speci
           {"segregation_index", 1},
           {"granular_temperature", species},
           {"kinetic_collision_rate", species * species},
+          {"kinetic_impact_rate", species * species},
           {"gas_velocity_seen", 3 * species},
           {"gas_force_mean", 3 * species},
           {"porosity_seen", species}};
@@ -305,6 +306,8 @@ SeriesRow RunAnalysis::sample(const CollisionMethod& sim, const GasCoupling* gas
   const LocalFields fields = local_fields(position, velocity, species, radius, S, field_grid_);
   row.push_back({"granular_temperature", S, species_granular_temperature(fields)});
   row.push_back({"kinetic_collision_rate", S * S, kinetic_collision_frequencies(fields)});
+  row.push_back({"kinetic_impact_rate", S * S,
+                 kinetic_collision_frequencies(fields, scene_.system.impact_speed)});
   if (gas != nullptr) {
     std::vector<double> u, f, eps;
     std::vector<std::size_t> count(S, 0);
@@ -409,6 +412,8 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
   const RunStatistics& st = sim.statistics();
   const double g = system.flight.gravity.norm();
   c.measured_rate.assign(S * S, NAN);
+  c.impact_rate.assign(S * S, NAN);
+  c.wall_impact_rate.assign(S, NAN);
   c.impulse_rate.assign(S * S, NAN);
   c.wall_rate.assign(S, NAN);
   c.weight.assign(S, 0.0);
@@ -425,15 +430,24 @@ RunAnalysis::Conclusions RunAnalysis::conclude(const CollisionMethod& sim) const
     for (std::size_t t = 0; t < S; ++t) {
       // Each s-s collision involves two particles of s.
       c.measured_rate[s * S + t] = static_cast<double>(st.pair(s, t)) * (s == t ? 2.0 : 1.0) * per;
+      c.impact_rate[s * S + t] = static_cast<double>(st.pair_impact(s, t)) * (s == t ? 2.0 : 1.0) * per;
       c.impulse_rate[s * S + t] = st.impulse(s, t) * (s == t ? 2.0 : 1.0) * per;
     }
-    std::uint64_t walls = 0;
-    for (std::size_t w = 0; w < st.wall_count; ++w) walls += st.wall(s, w);
+    std::uint64_t walls = 0, wall_impacts = 0;
+    for (std::size_t w = 0; w < st.wall_count; ++w) {
+      walls += st.wall(s, w);
+      wall_impacts += st.wall_impact(s, w);
+    }
     c.wall_rate[s] = static_cast<double>(walls) * per;
+    c.wall_impact_rate[s] = static_cast<double>(wall_impacts) * per;
   }
   c.kinetic_rate.assign(S * S, NAN);
   if (const auto* k = series("kinetic_collision_rate"))
     for (std::size_t j = 0; j < S * S; ++j) c.kinetic_rate[j] = time_average(times_, *k, S * S, j);
+  c.kinetic_impact_rate.assign(S * S, NAN);
+  if (const auto* k = series("kinetic_impact_rate"))
+    for (std::size_t j = 0; j < S * S; ++j)
+      c.kinetic_impact_rate[j] = time_average(times_, *k, S * S, j);
   c.temperature.assign(S, NAN);
   if (const auto* T = series("granular_temperature"))
     for (std::size_t s = 0; s < S; ++s) c.temperature[s] = time_average(times_, *T, S, s);

@@ -11,6 +11,8 @@
 ///                          the floor of the smallest and the largest species (2+ species)
 ///   granular_temperature   per species: <|v - u_local|^2> / 3, m^2/s^2 (local fields)
 ///   kinetic_collision_rate S x S: kinetic theory from the local fields, 1/s per particle
+///   kinetic_impact_rate    S x S: the same for the impacts only, the collisions faster than
+///                          the impact speed (local_fields.hpp, impact_share)
 ///   gas_velocity_seen      S x 3: mean interstitial gas velocity at the species' particles, m/s
 ///   gas_force_mean         S x 3: mean gas force (drag + pressure gradient) on one particle, N
 ///   porosity_seen          S: mean porosity at the species' particles
@@ -91,6 +93,9 @@ class RunAnalysis {
     std::vector<double> measured_rate;  ///< S x S, 1/s per particle of the row species.
     std::vector<double> kinetic_rate;   ///< S x S time average, 1/s.
     std::vector<double> wall_rate;      ///< S: wall collisions per particle per s.
+    std::vector<double> impact_rate;          ///< S x S: impacts per particle of the row species, 1/s.
+    std::vector<double> kinetic_impact_rate;  ///< S x S time average of kinetic theory's impacts, 1/s.
+    std::vector<double> wall_impact_rate;     ///< S: wall impacts per particle per s.
     std::vector<double> temperature;    ///< S: time average, m^2/s^2.
     std::vector<double> impulse_rate;   ///< S x S: |J| per s on one particle of the row species, N.
     std::vector<double> weight;         ///< S: m_s |g|, N.
@@ -105,6 +110,8 @@ class RunAnalysis {
     bool has_bed = false;                ///< Bed measures taken.
     BedConclusions bed;
   };
+  /// report.md's impact table: measured impacts against kinetic theory's at the same speed.
+  std::string impacts_report(const System& system, const Conclusions& c) const;
   Conclusions conclude(const CollisionMethod& sim) const;
   const FlowBoundaries* flow_ = nullptr;
 

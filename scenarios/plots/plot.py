@@ -170,100 +170,121 @@ def plot_collision_rates(run, path):
     """Collision frequency per particle, [s, t]: collisions of one s particle with t particles per
     second, measured over each sample interval from /timeseries/pair_collisions, beside kinetic
     theory: Enskog from the global density and temperature for a homogeneous gas, else the
-    analysis' kinetic_collision_rate from the local fields (runs with [analysis])."""
+    analysis' kinetic_collision_rate from the local fields (runs with [analysis]). With an impact
+    speed (summary.json impact_speed > 0) a second panel: the impacts, the collisions faster than
+    it (/timeseries/pair_impacts), beside kinetic theory's (kinetic_impact_rate)."""
     series = run.series_names
     t = run.series("time").values
-    names = run.species_names
-    s_count = len(names)
-    fig, ax = plt.subplots(figsize=(8.8, 4.2))
-    if len(t) < 2:
-        ax.text(0.5, 0.5, "fewer than two samples", ha="center", transform=ax.transAxes)
-    else:
-        counts = run.series("pair_collisions").values.astype(float)  # (samples, S, S)
-        dt = np.diff(t)
-        keep = dt > 0
-        middle = 0.5 * (t[1:] + t[:-1])[keep]
-        present = species_counts(run, len(t))
-        present = 0.5 * (present[1:] + present[:-1])[keep]  # mean over each interval
-        collisions = np.diff(counts, axis=0)[keep]
-        # A collision of two s particles is one for each of them.
-        collisions[:, np.arange(s_count), np.arange(s_count)] *= 2
-        with np.errstate(divide="ignore", invalid="ignore"):
-            measured = collisions / (dt[keep, None, None] * present[:, :, None])
-        measured[~np.isfinite(measured)] = np.nan
-        theory, theory_t, theory_label = None, None, None
-        if is_homogeneous_gas(run):
-            kinetic = run.series("kinetic_translational").values
-            n = float(np.sum(species_values(run, "count")))
-            temperature = 2 * kinetic / (3 * max(n - 1, 1))
-            if "granular_temperature" in series and s_count > 1:
-                # A mixture: each species at its own temperature (the analysis'), else a species
-                # that carries the kinetic energy (a sphere moving through a cloud) would heat
-                # the others. One species keeps the global T: the local temperatures leave out
-                # each cell's mean velocity and would lower T by a few per cent.
-                theta = run.series("granular_temperature").values.reshape(len(t), s_count)
-                theory = enskog_frequencies(run, None, theta)
-                theory_t = t
-                theory_label = "lines: Enskog (global density, each species' temperature)"
-            else:
-                # Mean temperature over each interval (exact for a linear change).
-                theory = enskog_frequencies(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
-                theory_t = middle
-                theory_label = "lines: Enskog (global density and temperature)"
-        elif "kinetic_collision_rate" in series:
-            theory = run.series("kinetic_collision_rate").values.reshape(len(t), s_count, s_count)
-            theory_t = t
-            theory_label = "lines: kinetic theory from the local fields ([analysis])"
-        handles = []
-        single = species_values(run, "count") == 1
-        for s in range(s_count):
-            for u in range(s_count):
-                if s == u and single[s] and "particles_present" not in series:
-                    continue  # one particle of a species: it has no partner of its own kind
-                colour = style.species_colour(s)
-                label = f"{names[s]} with {names[u]}"
-                ax.plot(middle, measured[:, s, u], style.partner_marker(u), ms=2.5, color=colour,
-                        alpha=0.45, ls="", zorder=2)
-                if theory is not None:  # over the markers, with a white edge to stand out
-                    ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=2.6,
-                            color="white", zorder=3)
-                    ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=1.5,
-                            color=style.shade(colour, -0.3), zorder=4)
-                handles.append(Line2D([], [], color=colour, marker=style.partner_marker(u), ms=4,
-                                      ls=style.partner_line(u) if theory is not None else "",
-                                      label=label))
-        handles.append(Line2D([], [], ls="", label="markers: measured over each sample interval"))
-        if theory is not None:
-            handles.append(Line2D([], [], ls="", label=theory_label))
-        positive = measured[np.isfinite(measured) & (measured > 0)]
-        if len(positive) == 0:
-            ax.text(0.5, 0.6, "no collisions in this run", ha="center", transform=ax.transAxes,
-                    color="0.3")
-        if theory is not None:
-            theory_positive = theory[np.isfinite(theory) & (theory > 0)]
-            positive = np.concatenate([positive, theory_positive])
-        if len(positive) and positive.max() > 10 * np.percentile(positive, 5):
-            ax.set_yscale("log")
-            # A bed at rest at the start has a kinetic-theory rate near zero: not worth decades.
-            ax.set_ylim(bottom=max(positive.min(), 1e-4 * positive.max()) / 1.5)
+    summary = run.summary or {}
+    impacts = "pair_impacts" in series and (summary.get("impact_speed") or 0) > 0
+    fig, axes = plt.subplots(2 if impacts else 1, 1, figsize=(8.8, 7.6 if impacts else 4.2),
+                             sharex=True, squeeze=False)
+    panels = [(axes[0, 0], "pair_collisions", "kinetic_collision_rate")]
+    if impacts:
+        panels.append((axes[1, 0], "pair_impacts", "kinetic_impact_rate"))
+    for ax, counts_name, theory_name in panels:
+        if len(t) < 2:
+            ax.text(0.5, 0.5, "fewer than two samples", ha="center", transform=ax.transAxes)
         else:
-            ax.set_ylim(bottom=0)
-        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
-                  handlelength=2.5)
-        if theory is None:
-            ax.text(0.02, 0.98, "no kinetic-theory line: not a homogeneous gas (Enskog needs\n"
-                    "periodic axes, no gravity, no walls) and no [analysis] (local fields)",
-                    transform=ax.transAxes, va="top", fontsize=7, color="0.3")
-    if len(t) > 1:
-        ax.set_xlim(t[0], t[-1])
-    ax.xaxis.set_major_locator(MaxNLocator(nbins=6))
-    ax.set_xlabel("time $t$ (s)")
+            _rate_panel(run, ax, t, series, counts_name, theory_name)
+        if len(t) > 1:
+            ax.set_xlim(t[0], t[-1])
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=6))
+    ax = axes[0, 0]
     ax.set_ylabel("collision frequency per particle (1/s)")
-    ax.set_title("Collisions of one particle of a species with the partner species",
-                 fontsize=10)
+    ax.set_title("Collisions of one particle of a species with the partner species", fontsize=10)
+    if impacts:
+        ax = axes[1, 0]
+        ax.set_ylabel("impact frequency per particle (1/s)")
+        ax.set_title(f"Impacts: collisions with a normal approach speed above "
+                     f"v* = {summary['impact_speed'] * 1e3:.3g} mm/s", fontsize=10)
+    axes[-1, 0].set_xlabel("time $t$ (s)")
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
+
+
+def _rate_panel(run, ax, t, series, counts_name, theory_name):
+    """One panel of plot_collision_rates: the per-particle rates of `counts_name` over each
+    sample interval (markers) beside kinetic theory (lines): Enskog for a homogeneous gas's
+    collisions, else the analysis series `theory_name`."""
+    names = run.species_names
+    s_count = len(names)
+    counts = run.series(counts_name).values.astype(float)  # (samples, S, S)
+    dt = np.diff(t)
+    keep = dt > 0
+    middle = 0.5 * (t[1:] + t[:-1])[keep]
+    present = species_counts(run, len(t))
+    present = 0.5 * (present[1:] + present[:-1])[keep]  # mean over each interval
+    collisions = np.diff(counts, axis=0)[keep]
+    # A collision of two s particles is one for each of them.
+    collisions[:, np.arange(s_count), np.arange(s_count)] *= 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        measured = collisions / (dt[keep, None, None] * present[:, :, None])
+    measured[~np.isfinite(measured)] = np.nan
+    theory, theory_t, theory_label = None, None, None
+    if counts_name == "pair_collisions" and is_homogeneous_gas(run):
+        kinetic = run.series("kinetic_translational").values
+        n = float(np.sum(species_values(run, "count")))
+        temperature = 2 * kinetic / (3 * max(n - 1, 1))
+        if "granular_temperature" in series and s_count > 1:
+            # A mixture: each species at its own temperature (the analysis'), else a species
+            # that carries the kinetic energy (a sphere moving through a cloud) would heat
+            # the others. One species keeps the global T: the local temperatures leave out
+            # each cell's mean velocity and would lower T by a few per cent.
+            theta = run.series("granular_temperature").values.reshape(len(t), s_count)
+            theory = enskog_frequencies(run, None, theta)
+            theory_t = t
+            theory_label = "lines: Enskog (global density, each species' temperature)"
+        else:
+            # Mean temperature over each interval (exact for a linear change).
+            theory = enskog_frequencies(run, 0.5 * (temperature[1:] + temperature[:-1])[keep])
+            theory_t = middle
+            theory_label = "lines: Enskog (global density and temperature)"
+    elif theory_name in series:
+        theory = run.series(theory_name).values.reshape(len(t), s_count, s_count)
+        theory_t = t
+        theory_label = "lines: kinetic theory from the local fields ([analysis])"
+    handles = []
+    single = species_values(run, "count") == 1
+    for s in range(s_count):
+        for u in range(s_count):
+            if s == u and single[s] and "particles_present" not in series:
+                continue  # one particle of a species: it has no partner of its own kind
+            colour = style.species_colour(s)
+            label = f"{names[s]} with {names[u]}"
+            ax.plot(middle, measured[:, s, u], style.partner_marker(u), ms=2.5, color=colour,
+                    alpha=0.45, ls="", zorder=2)
+            if theory is not None:  # over the markers, with a white edge to stand out
+                ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=2.6,
+                        color="white", zorder=3)
+                ax.plot(theory_t, theory[:, s, u], ls=style.partner_line(u), lw=1.5,
+                        color=style.shade(colour, -0.3), zorder=4)
+            handles.append(Line2D([], [], color=colour, marker=style.partner_marker(u), ms=4,
+                                  ls=style.partner_line(u) if theory is not None else "",
+                                  label=label))
+    handles.append(Line2D([], [], ls="", label="markers: measured over each sample interval"))
+    if theory is not None:
+        handles.append(Line2D([], [], ls="", label=theory_label))
+    positive = measured[np.isfinite(measured) & (measured > 0)]
+    if len(positive) == 0:
+        ax.text(0.5, 0.6, "no collisions in this run", ha="center", transform=ax.transAxes,
+                color="0.3")
+    if theory is not None:
+        theory_positive = theory[np.isfinite(theory) & (theory > 0)]
+        positive = np.concatenate([positive, theory_positive])
+    if len(positive) and positive.max() > 10 * np.percentile(positive, 5):
+        ax.set_yscale("log")
+        # A bed at rest at the start has a kinetic-theory rate near zero: not worth decades.
+        ax.set_ylim(bottom=max(positive.min(), 1e-4 * positive.max()) / 1.5)
+    else:
+        ax.set_ylim(bottom=0)
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+              handlelength=2.5)
+    if theory is None:
+        ax.text(0.02, 0.98, "no kinetic-theory line: not a homogeneous gas (Enskog needs\n"
+                "periodic axes, no gravity, no walls) and no [analysis] (local fields)",
+                transform=ax.transAxes, va="top", fontsize=7, color="0.3")
 
 
 def plot_snapshot(run, path, index, axes, slab):

@@ -65,16 +65,16 @@ OutputEstimate estimate_output(const Scene& scene, std::size_t particles) {
   e.samples = instants(scene.end_time, scene.output.sample_every);
   e.snapshot_bytes = n * kSnapshotParticleBytes + kSnapshotOverheadBytes +
                      (gas ? cells * 5 * 8 + kGasSnapshotOverheadBytes : 0.0);
-  // run_output.hpp: 12 scalar and tensor doubles (39 values), pair impulses and counts, events
-  // and collisions, wall counts and impulses; the gas series (11 values); run_analysis.hpp:
-  // granular temperature, kinetic-theory rates, with a gas what each species sees, mixing,
-  // segregation. `series`: how many datasets they are.
+  // run_output.hpp: 12 scalar and tensor doubles (39 values), pair impulses, collisions and
+  // impacts, events and collisions, wall collisions, impacts and impulses; the gas series (11
+  // values); run_analysis.hpp: granular temperature, kinetic-theory collision and impact rates,
+  // with a gas what each species sees, mixing, segregation. `series`: how many datasets they are.
   const bool mixing = scene.analysis.mixing_species >= 0;
-  double values = 39 + 2 * S * S + 2 + (W > 0 ? S * W + 3 * W : 0.0);
-  double series = 16 + (W > 0 ? 2 : 0);
+  double values = 39 + 3 * S * S + 2 + (W > 0 ? 2 * S * W + 3 * W : 0.0);
+  double series = 17 + (W > 0 ? 3 : 0);
   if (gas) values += 11 + 7 * S, series += 4 + 3;
-  values += S + S * S + (S > 1 ? 1 : 0) + (mixing ? 2 : 0);
-  series += 2 + (S > 1 ? 1 : 0) + (mixing ? 2 : 0);
+  values += S + 2 * S * S + (S > 1 ? 1 : 0) + (mixing ? 2 : 0);
+  series += 3 + (S > 1 ? 1 : 0) + (mixing ? 2 : 0);
   // tagged_bodies.hpp: T bodies, C = S + W partners: position, velocity, force (3 T each),
   // impulse and force by partner (3 T C each), the group's mean velocity and force (3 each).
   const double T = static_cast<double>(scene.analysis.tagged_bodies.size());

@@ -65,10 +65,14 @@ SeriesLayout series_layout(std::size_t species, std::size_t walls) {
                     {"kinetic_stress", 9},
                     {"pressure_tensor", 9},
                     {"pressure", 0}};
-  layout.counters = {{"events", 0}, {"collisions", 0}, {"pair_collisions", species * species}};
+  layout.counters = {{"events", 0},
+                     {"collisions", 0},
+                     {"pair_collisions", species * species},
+                     {"pair_impacts", species * species}};
   layout.doubles.emplace_back("pair_impulse", species * species);
   if (walls > 0) {
     layout.counters.emplace_back("wall_collisions", species * walls);
+    layout.counters.emplace_back("wall_impacts", species * walls);
     layout.doubles.emplace_back("wall_impulse", walls * 3);
   }
   return layout;
@@ -462,9 +466,11 @@ void RunFile::append_sample(const CollisionMethod& sim, const GasCoupling* gas, 
   put("events", std::vector<std::uint64_t>{stats.events});
   put("collisions", std::vector<std::uint64_t>{stats.collisions()});
   put("pair_collisions", stats.pair_collisions);
+  put("pair_impacts", stats.pair_impacts);
   put("pair_impulse", stats.pair_impulse);
   if (d.wall_count > 0) {
     put("wall_collisions", stats.wall_collisions);
+    put("wall_impacts", stats.wall_impacts);
     put("wall_impulse",
         flatten(std::vector<Vec3>(stats.wall_impulse.begin(), stats.wall_impulse.end())));
   }

@@ -17,9 +17,10 @@
 ///     kinetic_stress (x9, sum m v v / V at the sample, Pa); pressure_tensor (x9, Pa: the
 ///     kinetic stress averaged over the interval by the trapezoidal rule plus the virial booked
 ///     in the interval / (V dt)); pressure (trace / 3, Pa); pair_collisions (x S*S, uint64,
-///     cumulative, symmetric); pair_impulse (x S*S, cumulative sum of |J| over the collisions
-///     of each species pair, N s, symmetric); and when there are walls wall_collisions (x S*W, uint64,
-///     cumulative) and wall_impulse (x W*3, cumulative, N s). V is the box volume.
+///     cumulative, symmetric); pair_impacts (x S*S, uint64, cumulative, symmetric: the
+///     collisions above the impact speed, scenarios/scene/impact_speed.hpp); pair_impulse (x S*S, cumulative sum of |J| over the collisions
+///     of each species pair, N s, symmetric); and when there are walls wall_collisions and
+///     wall_impacts (x S*W, uint64, cumulative) and wall_impulse (x W*3, cumulative, N s). V is the box volume.
 ///   /analysis/          (runs with an analysis) id, tagged, start_height (by particle id),
 ///                        mixing_grid/ and field_grid/ (lower, upper, cells); the analysis
 ///                        series (run_analysis.hpp) are in /timeseries beside the others

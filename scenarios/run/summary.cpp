@@ -98,15 +98,22 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
   j << "  \"collisions_per_second\": " << json_number(collisions / wall) << ",\n";
 
   // Rate per particle of s with t: each s-s collision involves two particles of s.
-  j << "  \"collision_rate_per_particle\": {";
-  for (std::size_t s = 0, first = 1; s < S; ++s)
-    for (std::size_t t = 0; t < S; ++t, first = 0) {
-      const double count = static_cast<double>(now.pair(s, t) - before.pair(s, t)) * (s == t ? 2.0 : 1.0);
-      const double rate = particle_seconds[s] > 0 ? count / particle_seconds[s] : NAN;
-      j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "-" + system.species[t].name) << ": "
-        << json_number(rate);
-    }
-  j << "\n  },\n";
+  const auto pair_rates = [&](const char* key, auto count_of) {
+    j << "  " << json_string(key) << ": {";
+    for (std::size_t s = 0, first = 1; s < S; ++s)
+      for (std::size_t t = 0; t < S; ++t, first = 0) {
+        const double count = static_cast<double>(count_of(s, t)) * (s == t ? 2.0 : 1.0);
+        const double rate = particle_seconds[s] > 0 ? count / particle_seconds[s] : NAN;
+        j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "-" + system.species[t].name)
+          << ": " << json_number(rate);
+      }
+    j << "\n  },\n";
+  };
+  pair_rates("collision_rate_per_particle",
+             [&](std::size_t s, std::size_t t) { return now.pair(s, t) - before.pair(s, t); });
+  j << "  \"impact_speed\": " << json_number(system.impact_speed) << ",\n";
+  pair_rates("impact_rate_per_particle",
+             [&](std::size_t s, std::size_t t) { return now.pair_impact(s, t) - before.pair_impact(s, t); });
 
   j << "  \"enskog_rate_per_particle\": ";
   if (enskog_applies(system) && sim.particle_count() > 0) {
@@ -129,6 +136,12 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
     for (std::size_t w = 0; w < W; ++w, first = 0)
       j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "@" + system.walls[w].name) << ": "
         << (now.wall(s, w) - before.wall(s, w));
+  j << (S * W > 0 ? "\n  " : "") << "},\n";
+  j << "  \"wall_impacts\": {";
+  for (std::size_t s = 0, first = 1; s < S; ++s)
+    for (std::size_t w = 0; w < W; ++w, first = 0)
+      j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "@" + system.walls[w].name) << ": "
+        << (now.wall_impact(s, w) - before.wall_impact(s, w));
   j << (S * W > 0 ? "\n  " : "") << "},\n";
   j << "  \"wall_force\": {";
   for (std::size_t w = 0; w < W; ++w) {

@@ -20,7 +20,11 @@
 ///                             number of particles of a present}
 ///   enskog_rate_per_particle      the same from Enskog at the time-averaged temperature
 ///                             (periodic, gravity-free scenes without extra walls; else null)
+///   impact_speed             normal approach speed above which a collision is an impact, m/s
+///                            (scenarios/scene/impact_speed.hpp)
+///   impact_rate_per_particle like collision_rate_per_particle, impacts only
 ///   wall_collisions          {"species@wall": count in the stretch}
+///   wall_impacts             {"species@wall": impacts in the stretch}
 ///   wall_force               {"wall": time-averaged force of the particles on it, N}
 ///   mean_temperature         time-averaged granular temperature (2/3) E_kin / N, J
 ///   pressure                 time-averaged {kinetic, collisional, total}, Pa:

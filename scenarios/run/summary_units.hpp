@@ -50,7 +50,10 @@ inline constexpr SummaryKey kSummaryKeys[] = {
     // Collisions.
     {"collision_rate_per_particle.*", "1/s", "collisions of one particle of a with particles of b ('a-b'), per simulated second"},
     {"enskog_rate_per_particle.*", "1/s", "the same from Enskog theory at the time-averaged temperature (null where it does not apply)"},
+    {"impact_speed", "m/s", "normal approach speed above which a collision counts as an impact"},
+    {"impact_rate_per_particle.*", "1/s", "impacts (collisions above the impact speed) of one particle of a with particles of b ('a-b'), per simulated second"},
     {"wall_collisions.*", "count", "collisions of species s with wall w ('s@w') in this stretch"},
+    {"wall_impacts.*", "count", "impacts of species s on wall w ('s@w') in this stretch"},
     {"wall_force.*", "N", "time-averaged force of the particles on the wall, [x, y, z]"},
     // Temperature, pressure, energy.
     {"mean_temperature", "J", "time-averaged 2 E_kin / (3 N): an energy per particle, not m^2/s^2"},
@@ -114,6 +117,9 @@ inline constexpr SummaryKey kSummaryKeys[] = {
     {"analysis.dispersion.saturation_msd", "m^2", "mean squared displacement at which the bed saturates"},
     {"analysis.collision_frequency.*", "1/s", "measured collisions per particle per second, 'a-b' and 'a@walls'"},
     {"analysis.kinetic_theory_frequency.*", "1/s", "kinetic theory from the local densities and temperatures, 'a-b'"},
+    {"analysis.impact_speed", "m/s", "normal approach speed above which a collision counts as an impact"},
+    {"analysis.impact_frequency.*", "1/s", "measured impacts per particle per second, 'a-b' and 'a@walls'"},
+    {"analysis.kinetic_theory_impact_frequency.*", "1/s", "kinetic theory's impacts (collisions faster than the impact speed), 'a-b'"},
     {"analysis.granular_temperature.*", "m^2/s^2", "per species, time-averaged <|v - u_local|^2> / 3"},
     {"analysis.segregation_index.start", "1", "2 (h_small - h_large) / (h_small + h_large) at t = 0"},
     {"analysis.segregation_index.end", "1", "the same at the end"},

@@ -1,5 +1,7 @@
 #include "scenarios/scene/analysis_scene.hpp"
 
+#include "scenarios/scene/impact_speed.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -123,8 +125,13 @@ void read_bed_section(TableReader& t, Scene& scene) {
 
 void read_analysis(TableReader& root, Scene& scene) {
   AnalysisSettings& a = scene.analysis;
+  scene.system.impact_speed = default_impact_speed(scene.system);
   auto section = root.table("analysis");
   if (!section) return;
+  scene.system.impact_speed = section->number(
+      "impact_speed", scene.system.impact_speed,
+      Range{0.0, INFINITY, false, true,
+            "normal approach speed above which a collision counts as an impact, m/s"});
   if (auto m = section->table("mixing")) {
     a.mixing_species = static_cast<std::int32_t>(species_index(*m, "species", scene));
     a.mixing_cells = read_cells(*m, "cells", a.mixing_cells);

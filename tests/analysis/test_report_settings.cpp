@@ -60,6 +60,13 @@ TEST(ReportSettings, EventDrivenNamesTheTcTimeAndQuotesItsMeasuredEffect) {
   EXPECT_TRUE(has(s, "initial.seed = 7, one run")) << s;
   EXPECT_TRUE(has(s, "not converged in the TC time")) << s;
   EXPECT_TRUE(has(s, "scenarios/scenes/fines_bed_tc_chart.toml")) << s;
+  // The impact speed: 0.1 sqrt(9.81 m/s^2 x 1 mm) = 9.905 mm/s.
+  EXPECT_TRUE(has(s, "Impacts: collisions faster than v* = 0.009905 m/s")) << s;
+}
+
+TEST(ReportSettings, NamesTheImpactSpeedAsSet) {
+  const std::string s = section({"analysis.impact_speed=0"});
+  EXPECT_TRUE(has(s, "v* = 0 m/s (analysis.impact_speed; 0: every collision is an impact)")) << s;
 }
 
 TEST(ReportSettings, WithoutATcTimeNoTcEvidence) {

@@ -43,6 +43,7 @@ SERIES_UNITS = {
     "events": "1", "collisions": "1", "event_rate": "1/s", "collision_rate": "1/s",
     "virial": "J s", "kinetic_stress": "Pa", "pressure_tensor": "Pa", "pressure": "Pa",
     "pair_collisions": "1", "pair_impulse": "N s", "wall_collisions": "1", "wall_impulse": "N s",
+    "pair_impacts": "1", "wall_impacts": "1", "kinetic_impact_rate": "1/s",
     "gas_pressure_drop": "Pa", "gas_inlet_velocity": "m/s", "gas_drag_force": "N",
     "gas_momentum_inflow": "Pa",
     "lacey_index": "1", "axial_msd": "m^2", "segregation_index": "1",
@@ -65,7 +66,7 @@ SERIES_UNITS = {
 # Shapes of a row beyond (samples,): tensors as 3 x 3; per species pair S x S; per species and
 # wall S x W; per wall W x 3; per species S x 3. Others stay as written.
 _TENSORS = {"virial", "kinetic_stress", "pressure_tensor"}
-_PAIRS = {"pair_collisions", "pair_impulse", "kinetic_collision_rate"}
+_PAIRS = {"pair_collisions", "pair_impacts", "pair_impulse", "kinetic_collision_rate", "kinetic_impact_rate"}
 _SPECIES_VECTORS = {"gas_velocity_seen", "gas_force_mean"}
 
 
@@ -334,8 +335,8 @@ class Output:
     def series(self, name):
         """The time series `name` (series_names) as Series(name, time, values, unit). Rows are
         samples; per-row tensors are 3 x 3 (virial, kinetic_stress, pressure_tensor), per species
-        pair S x S (pair_collisions, pair_impulse, kinetic_collision_rate), per species and wall
-        S x W (wall_collisions), per wall W x 3 (wall_impulse), per species S x 3
+        pair S x S (pair_collisions, pair_impacts, pair_impulse, kinetic_collision_rate,
+        kinetic_impact_rate), per species and wall S x W (wall_collisions, wall_impacts), per wall W x 3 (wall_impulse), per species S x 3
         (gas_velocity_seen, gas_force_mean); others as written (run_output.hpp)."""
         self._need_run("time series")
 
@@ -352,7 +353,7 @@ class Output:
                 values = values.reshape(rows, 3, 3)
             elif name in _PAIRS:
                 values = values.reshape(rows, species, species)
-            elif name == "wall_collisions" and walls:
+            elif name in ("wall_collisions", "wall_impacts") and walls:
                 values = values.reshape(rows, species, walls)
             elif name == "wall_impulse" and walls:
                 values = values.reshape(rows, walls, 3)

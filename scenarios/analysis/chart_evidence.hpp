@@ -120,7 +120,7 @@ inline constexpr double kSoftLoadStopped = 3e6, kSoftLoadCompleted = 1e7,
 /// The main job's bed (fines_bed.toml, 0.5 s after 0.2 s of settling, each TC time settling its
 /// own bed) at TC times of 1e-4, 5e-5, 2e-5 and 1e-5 s, event-driven with relax flights
 /// (scenarios/chart/CHARTS.md, "The fines bed's TC time").
-inline constexpr ChartSource kFinesBedTc{"scenarios/scenes/fines_bed_tc_chart.toml", "2026-12-03",
+inline constexpr ChartSource kFinesBedTc{"scenarios/scenes/fines_bed_tc_chart.toml", "2026-12-08",
                                          "scenarios/chart/CHARTS.md"};
 inline constexpr int kFinesBedTcSeeds = 3;
 /// The scene's TC time and the shortest charted (s), and the longest whose mixing rate was within
@@ -130,5 +130,12 @@ inline constexpr double kFinesBedTcShipped = 1e-4, kFinesBedTcShortest = 1e-5, k
 inline constexpr double kFinesBedTcMixingShipped = 0.36, kFinesBedTcMixingShortest = 0.70;
 /// Their collisions with each other per large bead (1/s) at the scene's and the shortest TC time.
 inline constexpr double kFinesBedTcLargeLargeShipped = 2630, kFinesBedTcLargeLargeShortest = 13200;
+/// Impacts (collisions faster than 0.1 sqrt(g d_fines)) from kFinesBedTcConverged to
+/// kFinesBedTcShortest, relative: large-large, large-fines and fines-fines (the first the only
+/// one outside the seeds' noise).
+inline constexpr double kFinesBedTcImpactLargeLarge = 0.14, kFinesBedTcImpactLargeFines = 0.05,
+                        kFinesBedTcImpactFinesFines = -0.10;
+/// The raw large-large collision frequency over the same step, relative.
+inline constexpr double kFinesBedTcRawLargeLargeStep = -0.35;
 
 }  // namespace carom::evidence

@@ -94,9 +94,15 @@ std::string numerical_settings_section(const Scene& scene) {
       << display_number(e::kFinesBedTcMixingShortest) << " 1/s and their collision frequency with each other from "
       << display_number(e::kFinesBedTcLargeLargeShipped) << " to " << display_number(e::kFinesBedTcLargeLargeShortest)
       << " 1/s; the mixing rate at " << display_number(e::kFinesBedTcConverged) << " s was within the seeds' noise of "
-      << display_number(e::kFinesBedTcShortest) << " s. So in a dense bed the collision frequencies above are "
+      << display_number(e::kFinesBedTcShortest) << " s. So in a dense bed the raw collision frequencies above are "
          "not converged in the TC time, and a mixing rate at a TC time above "
-      << display_number(e::kFinesBedTcConverged) << " s is not shown converged.\n\n";
+      << display_number(e::kFinesBedTcConverged) << " s is not shown converged. The impact frequencies moved "
+         "far less between "
+      << display_number(e::kFinesBedTcConverged) << " and " << display_number(e::kFinesBedTcShortest)
+      << " s (large-large " << std::showpos << 100 * e::kFinesBedTcImpactLargeLarge << " %, large-fines "
+      << 100 * e::kFinesBedTcImpactLargeFines << " %, fines-fines " << 100 * e::kFinesBedTcImpactFinesFines
+      << " %) than the raw large-large count (" << 100 * e::kFinesBedTcRawLargeLargeStep << std::noshowpos
+      << " %).\n\n";
   }
   return r.str();
 }

@@ -123,8 +123,8 @@ inline constexpr double kSoftLoadStopped = 3e6, kSoftLoadCompleted = 1e7,
 inline constexpr ChartSource kFinesBedTc{"scenarios/scenes/fines_bed_tc_chart.toml", "2026-12-08",
                                          "scenarios/chart/CHARTS.md"};
 inline constexpr int kFinesBedTcSeeds = 3;
-/// The scene's TC time and the shortest charted (s), and the longest whose mixing rate was within
-/// the seeds' noise of the shortest's.
+/// The TC time the scene had when charted (it runs at kFinesBedTcConverged since), the shortest
+/// charted (s), and the longest whose mixing rate was within the seeds' noise of the shortest's.
 inline constexpr double kFinesBedTcShipped = 1e-4, kFinesBedTcShortest = 1e-5, kFinesBedTcConverged = 2e-5;
 /// The large beads' mixing rate (1/s, mean of the seeds) at the scene's and the shortest TC time.
 inline constexpr double kFinesBedTcMixingShipped = 0.36, kFinesBedTcMixingShortest = 0.70;

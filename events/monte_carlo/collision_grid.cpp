@@ -23,7 +23,10 @@ void CollisionGrid::clear() { std::fill(sums_.begin(), sums_.end(), Sums{}); }
 std::int32_t CollisionGrid::cell_of(const Vec3& r) const {
   std::int32_t flat = 0, stride = 1;
   for (int k = 0; k < 3; ++k) {
-    int c = static_cast<int>(std::floor((r[k] - domain_.lower[k]) / size_[k]));
+    // Bounded before the conversion: a position far outside the box (a run blowing up, which
+    // the run's speed bound then stops) must not overflow the int; NaN goes to cell 0.
+    const double x = std::clamp(std::floor((r[k] - domain_.lower[k]) / size_[k]), -1e9, 1e9);
+    int c = std::isnan(x) ? 0 : static_cast<int>(x);
     if (domain_.periodic[k])
       c = ((c % cells_[k]) + cells_[k]) % cells_[k];
     else

@@ -18,8 +18,10 @@ struct CellSort {
   std::array<int, 3> cell_of(const Domain& d, const Vec3& r) const {
     std::array<int, 3> c{};
     for (int k = 0; k < 3; ++k) {
-      const int idx = static_cast<int>(std::floor((r[k] - d.lower[k]) / size[k]));
-      c[k] = std::clamp(idx, 0, cells[k] - 1);
+      // Clamped before the conversion: a position far outside the box (a run blowing up, which
+      // the run's speed bound then stops) must not overflow the int; NaN goes to cell 0.
+      const double x = std::floor((r[k] - d.lower[k]) / size[k]);
+      c[k] = x > 0.0 ? static_cast<int>(std::min(x, static_cast<double>(cells[k] - 1))) : 0;
     }
     return c;
   }

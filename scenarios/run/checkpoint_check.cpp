@@ -244,7 +244,21 @@ static void check_state(const Checkpoint& checkpoint, const System& system) {
         refuse(file, c.path("flight_rate"), "particle " + std::to_string(i) + "'s drag rate is " + number(rate[i]) +
                                                 " 1/s, not " + (checkpoint.has_gas() ? "a finite rate >= 0" : "0 (the run has no gas)"));
   }
-  if (particles.contains("flight_drive")) c.vectors("flight_drive");
+  // The drive of a flight (gravity, the gas's pressure gradient, and the drag's pull towards
+  // the gas, rate u) over its rate is the flight's terminal velocity: it may not exceed
+  // kMaxSpeed; without drag (rate 0) the drive may not bring a particle past kMaxSpeed within a
+  // second. A wild drive would blow the resumed run up within a step and be misread as a
+  // failing method.
+  if (particles.contains("flight_drive")) {
+    const std::vector<double> drive = c.vectors("flight_drive");
+    const std::vector<double> rate =
+        particles.contains("flight_rate") ? doubles(particles, "flight_rate") : std::vector<double>(n, 0.0);
+    for (std::size_t i = 0; i < n && i < rate.size(); ++i)
+      if (norm3(drive, i) > kMaxSpeed * (1.0 + rate[i]))
+        refuse(file, c.path("flight_drive"), "particle " + std::to_string(i) + "'s drive is " + number(norm3(drive, i)) +
+                                                 " m/s^2, above the bound " + number(kMaxSpeed * (1.0 + rate[i])) +
+                                                 " m/s^2 (" + number(kMaxSpeed) + " m/s times 1/s plus its drag rate)");
+  }
   std::vector<double> clock;
   if (particles.contains("clock")) {
     clock = doubles(particles, "clock");

@@ -131,18 +131,18 @@ std::string summary_json(const CollisionMethod& sim, const Scene& scene, const R
     j << "null,\n";
   }
 
-  j << "  \"wall_collisions\": {";
-  for (std::size_t s = 0, first = 1; s < S; ++s)
-    for (std::size_t w = 0; w < W; ++w, first = 0)
-      j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "@" + system.walls[w].name) << ": "
-        << (now.wall(s, w) - before.wall(s, w));
-  j << (S * W > 0 ? "\n  " : "") << "},\n";
-  j << "  \"wall_impacts\": {";
-  for (std::size_t s = 0, first = 1; s < S; ++s)
-    for (std::size_t w = 0; w < W; ++w, first = 0)
-      j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "@" + system.walls[w].name) << ": "
-        << (now.wall_impact(s, w) - before.wall_impact(s, w));
-  j << (S * W > 0 ? "\n  " : "") << "},\n";
+  // Counts per species and wall in the stretch, "s@w".
+  const auto wall_counts = [&](const char* key, auto count_of) {
+    j << "  " << json_string(key) << ": {";
+    for (std::size_t s = 0, first = 1; s < S; ++s)
+      for (std::size_t w = 0; w < W; ++w, first = 0)
+        j << (first ? "" : ",") << "\n    " << json_string(system.species[s].name + "@" + system.walls[w].name)
+          << ": " << count_of(s, w);
+    j << (S * W > 0 ? "\n  " : "") << "},\n";
+  };
+  wall_counts("wall_collisions", [&](std::size_t s, std::size_t w) { return now.wall(s, w) - before.wall(s, w); });
+  wall_counts("wall_impacts",
+              [&](std::size_t s, std::size_t w) { return now.wall_impact(s, w) - before.wall_impact(s, w); });
   j << "  \"wall_force\": {";
   for (std::size_t w = 0; w < W; ++w) {
     const Eigen::Vector3d force = dt > 0 ? Eigen::Vector3d((now.wall_impulse[w] - before.wall_impulse[w]) / dt)
